@@ -1,0 +1,102 @@
+// The ball-cushion impact model of Mathavan, Jackson & Parkin (2010): a rigid cushion nose touching
+// the ball at I above its equator and the cloth touching it at C below, both with Coulomb friction,
+// resolved in impulse space (the independent variable P is the normal impulse at I).
+//
+// Frame (the "local cushion frame"): x along the cushion, y horizontal and into the cushion (an
+// incoming ball has v.y > 0), z up. Units: SI (kg, m, s, rad, N s, J).
+//
+// This file holds what both solvers share: parameters, their validation, the incoming state, the
+// slip velocities at the two contacts and the result record. The solvers are in
+// cushion_paper_solver.h (the paper's Euler scheme) and cushion_exact_solver.h (event-located).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace baize::physics {
+
+// Constants of one impact; they never change while it runs. Defaults: the seed paper's snooker values.
+struct CushionParams {
+  double mass_kg = 0.1406;
+  double radius_m = 0.02625;
+  double contact_height_m = 0.02625 * 7.0 / 5.0;  // nose height above the slate; h = 7R/5 in the paper
+  double restitution = 0.98;                      // e_e, energetic coefficient (Stronge), in (0, 1]
+  double cushion_friction = 0.14;                 // mu_w, ball on cushion nose
+  double cloth_friction = 0.212;                  // mu_s, ball on cloth
+};
+
+// sin(theta) = (h - R) / R: theta is the angle of the contact normal at I above the horizontal.
+double contactSinTheta(const CushionParams& params);
+
+// Throws std::invalid_argument naming the value and the allowed range when the parameters are not
+// physical or leave the model (for example mu_w >= tan(theta), where the table reaction turns
+// negative).
+void validateCushionParams(const CushionParams& params);
+
+// Ball velocity and angular velocity in the local cushion frame.
+struct BallVelocity {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();  // centre velocity, m/s
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();  // angular velocity, rad/s
+};
+
+// The incoming ball of the paper's Fig. 2, with the spins assigned the physically right way round
+// (the seed text prints them swapped): v = V0 (cos a, sin a, 0), w = (-wT sin a, wT cos a, wS).
+// alpha is measured from the cushion line (pi/2 is head-on); topspin wT = V0/R is natural roll;
+// positive sidespin is counter-clockwise seen from above.
+BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_radps,
+                          double sidespin_radps);
+
+// Throws std::invalid_argument unless every component is finite, v.z is 0 (the ball is on the
+// table) and v.y > 0 (the ball moves into the cushion).
+void validateIncomingBall(const BallVelocity& ball);
+
+// Slip velocity of the ball's surface at the cushion contact I, in the tangent basis (x, Y') with
+// Y' = (0, -sin th, cos th): (v_x + R(w_y sin th - w_z cos th), -v_y sin th + R w_x).
+Eigen::Vector2d cushionSlip(const CushionParams& params, const BallVelocity& ball);
+
+// Slip velocity at the cloth contact C, in (x, y): (v_x - R w_y, v_y + R w_x).
+Eigen::Vector2d clothSlip(const CushionParams& params, const BallVelocity& ball);
+
+// Change of the ball's velocities when the normal impulse at I grows by `normal_impulse_Ns` while
+// friction impulses -cushion_friction_impulse (in the basis x, Y' at I) and -cloth_friction_impulse
+// (in x, y at C) act, the table's normal impulse being whatever keeps v_z at 0 (eq. 3d). Linear in
+// all three; with the friction impulses written as mu_w (cos Phi, sin Phi) dP and
+// mu_s (sin th + mu_w sin Phi cos th) (cos Phi', sin Phi') dP it gives eq. 14a and its five partners.
+BallVelocity impulseResponse(const CushionParams& params, double normal_impulse_Ns,
+                             const Eigen::Vector2d& cushion_friction_impulse_Ns,
+                             const Eigen::Vector2d& cloth_friction_impulse_Ns);
+
+// Kinetic energy of the ball (translation plus rotation of a solid sphere), J.
+double kineticEnergy(const CushionParams& params, const BallVelocity& ball);
+
+enum class Contact { Cushion, Cloth };  // I and C
+enum class ContactMode { Slip, Stick };
+
+// From impulse_Ns on, `contact` is in `mode`. The first two entries give the modes at P = 0.
+struct ContactChange {
+  double impulse_Ns = 0;
+  Contact contact = Contact::Cushion;
+  ContactMode mode = ContactMode::Slip;
+};
+
+// The ball's state part way through the impact (for slip-against-impulse plots).
+struct ImpactSample {
+  double impulse_Ns = 0;      // P
+  BallVelocity ball;
+  double normal_work_J = 0;   // W(P): work of the normal impulse at I, positive while compressing
+  Eigen::Vector2d cushion_slip = Eigen::Vector2d::Zero();  // (s_x, s_y') at I
+  Eigen::Vector2d cloth_slip = Eigen::Vector2d::Zero();    // (s'_x, s'_y) at C
+};
+
+struct CushionImpactResult {
+  BallVelocity after;                  // outgoing state, local cushion frame
+  double compression_impulse_Ns = 0;   // P_c: normal impulse at I when compression ends
+  double final_impulse_Ns = 0;         // P_f: normal impulse at I when the impact ends
+  double compression_work_J = 0;       // W_c: work of the normal force at I during compression
+  std::vector<ContactChange> contact_changes;  // initial modes, then every stick/slip change
+  long rhs_evaluations = 0;            // cost: evaluations of the rates dy/dP
+  std::vector<ImpactSample> trace;     // only when the solver options ask for it
+};
+
+}  // namespace baize::physics

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs every Debian package Baize needs to build, test and benchmark.
+# Idempotent: when everything is already installed it does nothing and prints nothing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev          # small fixed-size linear algebra in the physics
+  nlohmann-json3-dev     # scene, result and output JSON
+  libcli11-dev           # the baize command line
+  libgtest-dev libgmock-dev  # unit tests
+  libbenchmark-dev       # micro benchmarks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+if [[ $(id -u) -ne 0 ]]; then
+  echo "setup.sh: missing packages: ${missing[*]}; run as root (or with sudo) to install them" >&2
+  exit 1
+fi
+echo "setup.sh: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
