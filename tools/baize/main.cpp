@@ -1,1 +1,31 @@
-int main() { return 0; }
+// baize: the table simulator's command-line program. Each subcommand lives in its own file pair
+// (tools/baize/<name>_command.*) and registers itself on the App built here.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "tools/baize/bench_cushion_command.h"
+#include "tools/baize/cli_errors.h"
+#include "tools/baize/cushion_command.h"
+
+int main(int argc, char** argv) {
+  using namespace baize::tools;
+  CLI::App app{"Baize: an event-based pool and snooker table simulator", "baize"};
+  app.require_subcommand(1, 1);
+
+  addCushionCommand(app);
+
+  CLI::App* bench = app.add_subcommand("bench", "Measure the speed and accuracy of the models");
+  bench->require_subcommand(1, 1);
+  addBenchCushionCommand(*bench);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& failed) {  // a command that ran and reported its own error
+    return failed.get_exit_code();
+  } catch (const CLI::ParseError& error) {
+    if (error.get_exit_code() == 0) return app.exit(error);  // --help
+    std::cerr << "baize: error: " << error.what() << "\nRun 'baize --help' for usage.\n";
+    return kExitUsage;
+  }
+  return 0;
+}

@@ -1,0 +1,36 @@
+#include "tools/baize/cli_errors.h"
+
+#include <cmath>
+#include <exception>
+#include <iostream>
+
+#include "tools/baize/number_format.h"
+
+namespace baize::tools {
+
+void rejectFlag(const std::string& flag, double value, const std::string& allowed) {
+  throw UsageError(flag + " = " + fullPrecision(value) + " is not allowed: " + allowed);
+}
+
+void requireFiniteFlag(const std::string& flag, double value) {
+  if (!std::isfinite(value)) rejectFlag(flag, value, "it must be a finite number");
+}
+
+int runReportingErrors(const std::string& command, const std::function<void()>& body) {
+  const auto report = [&](const std::exception& error, int status) {
+    std::cerr << "baize " << command << ": error: " << error.what() << '\n';
+    return status;
+  };
+  try {
+    body();
+    return 0;
+  } catch (const UsageError& error) {
+    return report(error, kExitUsage);
+  } catch (const std::invalid_argument& error) {
+    return report(error, kExitUsage);
+  } catch (const std::exception& error) {
+    return report(error, kExitFailure);
+  }
+}
+
+}  // namespace baize::tools

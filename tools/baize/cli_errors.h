@@ -1,0 +1,30 @@
+// How the baize commands report errors: one line "baize <command>: error: <message>" on stderr and
+// an exit status that tells usage errors (2: a flag or input value the program or the model does
+// not accept) from failures (1: a file that cannot be written, a solver that breaks down).
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace baize::tools {
+
+constexpr int kExitUsage = 2;
+constexpr int kExitFailure = 1;
+
+// A flag value the command refuses; the message names the flag and the value.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws UsageError "<flag> = <value> is not allowed: <allowed>".
+[[noreturn]] void rejectFlag(const std::string& flag, double value, const std::string& allowed);
+void requireFiniteFlag(const std::string& flag, double value);
+
+// Runs a command's body and turns what it throws into the message and exit status above
+// (std::invalid_argument, which the physics throws for inputs outside the model, counts as usage).
+// Returns 0 when the body returns normally.
+int runReportingErrors(const std::string& command, const std::function<void()>& body);
+
+}  // namespace baize::tools

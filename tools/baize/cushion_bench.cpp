@@ -1,0 +1,138 @@
+#include "tools/baize/cushion_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace baize::tools {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A timed batch lasts at least this long, ns: steady_clock ticks in 1 ns and a pair of reads costs
+// a few tens of ns here, so the clock adds well under 1 % to a batch's time.
+constexpr double kMinBatchNs = 20'000;
+constexpr long kMaxBatch = 1'000'000;  // runs per batch, whatever the first run measured
+
+// Uniform in [lo, hi) from the top 53 bits of one draw: defined here rather than by
+// std::uniform_real_distribution, whose algorithm differs between standard libraries.
+double uniform(std::mt19937_64& generator, double lo, double hi) {
+  const double unit = static_cast<double>(generator() >> 11) * 0x1.0p-53;  // [0, 1)
+  return lo + (hi - lo) * unit;
+}
+
+double impactError(const physics::BallVelocity& ball, const physics::BallVelocity& reference,
+                   double radius_m, double speed_mps) {
+  const double velocity_error = (ball.v - reference.v).cwiseAbs().maxCoeff();
+  const double spin_error = radius_m * (ball.w - reference.w).cwiseAbs().maxCoeff();
+  return std::max(velocity_error, spin_error) / speed_mps;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+double elapsedNs(Clock::time_point start, Clock::time_point end) {
+  return std::chrono::duration<double, std::nano>(end - start).count();
+}
+
+// Outgoing states are summed into this, so that no solver call could be dropped as unused.
+volatile double g_checksum = 0;
+
+struct BenchImpact {
+  double speed_mps;
+  physics::BallVelocity incoming;
+  physics::BallVelocity reference;  // outgoing state at kReferenceTolerance
+};
+
+BenchRow measure(const physics::CushionParams& params, const std::vector<BenchImpact>& impacts,
+                 const SolverSetting& setting, int passes) {
+  BenchRow row;
+  row.setting = setting;
+  std::vector<long> batch(impacts.size());
+  std::vector<double> best_ns(impacts.size(), std::numeric_limits<double>::infinity());
+  // A first, untimed-for-the-table run gives the output to score and the batch size.
+  for (std::size_t i = 0; i < impacts.size(); ++i) {
+    const Clock::time_point start = Clock::now();
+    const physics::CushionImpactResult result = solveCushionShot(params, impacts[i].incoming, setting);
+    const double once_ns = std::max(1.0, elapsedNs(start, Clock::now()));
+    row.max_error = std::max(row.max_error, impactError(result.after, impacts[i].reference,
+                                                        params.radius_m, impacts[i].speed_mps));
+    batch[i] = std::min(kMaxBatch, static_cast<long>(std::ceil(kMinBatchNs / once_ns)));
+  }
+  for (int pass = 0; pass < passes; ++pass) {
+    for (std::size_t i = 0; i < impacts.size(); ++i) {
+      double checksum = 0;
+      const Clock::time_point start = Clock::now();
+      for (long run = 0; run < batch[i]; ++run) {
+        checksum += solveCushionShot(params, impacts[i].incoming, setting).after.v.x();
+      }
+      best_ns[i] = std::min(best_ns[i], elapsedNs(start, Clock::now()) / batch[i]);
+      g_checksum = g_checksum + checksum;
+    }
+  }
+  row.median_ns = median(best_ns);
+  return row;
+}
+
+}  // namespace
+
+std::vector<CushionShot> benchShots(int count) {
+  std::mt19937_64 generator(kBenchSeed);
+  std::vector<CushionShot> shots(count);
+  for (CushionShot& shot : shots) {
+    shot.speed_mps = uniform(generator, 0.1, 2.5);
+    shot.angle_deg = uniform(generator, 1, 179);
+    shot.topspin_k = uniform(generator, -2, 3);
+    shot.sidespin_k = uniform(generator, -3, 3);
+  }
+  return shots;
+}
+
+std::vector<SolverSetting> benchSettings() {
+  std::vector<SolverSetting> settings;
+  for (int steps : {100, 1000, 5000, 50000}) {
+    SolverSetting paper;
+    paper.kind = SolverKind::Paper;
+    paper.paper_steps = steps;
+    settings.push_back(paper);
+  }
+  settings.push_back(SolverSetting{});  // the exact solver at its default tolerance
+  for (double tolerance : {1e-6, 1e-8, 1e-10, 1e-12}) {
+    SolverSetting exact;
+    exact.exact_tolerance = tolerance;
+    settings.push_back(exact);
+  }
+  return settings;
+}
+
+BenchReport runCushionBench(const physics::CushionParams& params, int count, int passes,
+                            const std::function<void(const BenchRow&)>& on_row) {
+  SolverSetting reference_setting;
+  reference_setting.exact_tolerance = kReferenceTolerance;
+  SolverSetting check_setting;
+  check_setting.exact_tolerance = kReferenceCheckTolerance;
+
+  BenchReport report;
+  std::vector<BenchImpact> impacts;
+  for (const CushionShot& shot : benchShots(count)) {
+    const physics::BallVelocity incoming = incomingBallOf(shot, params.radius_m);
+    const physics::BallVelocity reference =
+        solveCushionShot(params, incoming, reference_setting).after;
+    const physics::BallVelocity check = solveCushionShot(params, incoming, check_setting).after;
+    report.reference_check_error = std::max(
+        report.reference_check_error, impactError(check, reference, params.radius_m, shot.speed_mps));
+    impacts.push_back({shot.speed_mps, incoming, reference});
+  }
+  for (const SolverSetting& setting : benchSettings()) {
+    report.rows.push_back(measure(params, impacts, setting, passes));
+    if (on_row) on_row(report.rows.back());
+  }
+  return report;
+}
+
+}  // namespace baize::tools

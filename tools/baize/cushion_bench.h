@@ -1,0 +1,48 @@
+// Speed and accuracy of the cushion solvers over one fixed, seeded set of impacts, measured against
+// a converged reference (the exact solver at kReferenceTolerance). Used by `baize bench cushion`.
+//
+// Error of one impact: max(|v - v_ref|_inf, R |w - w_ref|_inf) / V0, the largest error of any
+// velocity component or of any spin component expressed as a surface speed, relative to the
+// incoming speed. A setting's max_error is the largest over the set.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "physics/cushion_model.h"
+#include "tools/baize/cushion_run.h"
+
+namespace baize::tools {
+
+constexpr std::uint64_t kBenchSeed = 20100521;  // fixed: every run measures the same impacts
+constexpr int kDefaultBenchImpacts = 1000;
+constexpr double kReferenceTolerance = 1e-14;   // the exact solver's, for the reference outputs
+constexpr double kReferenceCheckTolerance = 1e-13;  // a second reference 10x looser, to check it
+
+// The set: V0 uniform in [0.1, 2.5] m/s, alpha in [1, 179] deg, topspin k in [-2, 3] and
+// sidespin k in [-3, 3] (units V0/R), drawn from std::mt19937_64 seeded with kBenchSeed through
+// a fixed mapping of its 64-bit output (the same on every standard library).
+std::vector<CushionShot> benchShots(int count);
+
+// paper N = 100, 1000, 5000, 50000; exact at its default and at tolerances 1e-6 ... 1e-12.
+std::vector<SolverSetting> benchSettings();
+
+struct BenchRow {
+  SolverSetting setting;
+  double median_ns = 0;  // median over the impacts of the time per impact, ns
+  double max_error = 0;  // as defined above, dimensionless
+};
+
+struct BenchReport {
+  std::vector<BenchRow> rows;  // in the order of benchSettings()
+  // Largest error (as above) of the reference against the kReferenceCheckTolerance solution.
+  double reference_check_error = 0;
+};
+
+// Times every setting over `count` impacts; each impact's time is the least over `passes` timed
+// batches. Calls on_row after each setting (for progress output).
+BenchReport runCushionBench(const physics::CushionParams& params, int count, int passes,
+                            const std::function<void(const BenchRow&)>& on_row = {});
+
+}  // namespace baize::tools

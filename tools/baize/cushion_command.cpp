@@ -1,0 +1,262 @@
+#include "tools/baize/cushion_command.h"
+
+#include <CLI/CLI.hpp>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "tools/baize/cli_errors.h"
+#include "tools/baize/cushion_run.h"
+#include "tools/baize/cushion_sweep.h"
+
+namespace baize::tools {
+namespace {
+
+struct CushionFlags {
+  CushionShot shot;
+  std::string solver = "paper";  // the exact solver is experimental until issue #2 is done
+  SolverSetting setting;
+  physics::CushionParams params;
+  CLI::Option* contact_height_flag = nullptr;  // unset: h = 7R/5 of the radius in use
+  bool json = false;
+  std::string sweep_directory;
+};
+
+// The checks that belong to the flags themselves. The parameters' ranges are the physics' to
+// check (validateCushionParams); namingTheFlag adds the flag to its messages.
+void validateFlags(const CushionFlags& flags) {
+  const CushionShot& shot = flags.shot;
+  requireFiniteFlag("--speed", shot.speed_mps);
+  if (!(shot.speed_mps > 0)) rejectFlag("--speed", shot.speed_mps, "it must be > 0 (m/s)");
+  requireFiniteFlag("--angle", shot.angle_deg);
+  if (!(shot.angle_deg > 0 && shot.angle_deg < 180)) {
+    rejectFlag("--angle", shot.angle_deg,
+               "it must lie strictly between 0 and 180 degrees (90 is head-on)");
+  }
+  requireFiniteFlag("--topspin", shot.topspin_k);
+  requireFiniteFlag("--sidespin", shot.sidespin_k);
+  if (flags.setting.paper_steps < 1) {
+    rejectFlag("--steps", flags.setting.paper_steps, "it must be >= 1");
+  }
+  requireFiniteFlag("--tolerance", flags.setting.exact_tolerance);
+  if (!(flags.setting.exact_tolerance > 0)) {
+    rejectFlag("--tolerance", flags.setting.exact_tolerance, "it must be > 0");
+  }
+  const physics::CushionParams& p = flags.params;
+  requireFiniteFlag("--mass", p.mass_kg);
+  requireFiniteFlag("--radius", p.radius_m);
+  requireFiniteFlag("--h", p.contact_height_m);
+  requireFiniteFlag("--e", p.restitution);
+  requireFiniteFlag("--mu-w", p.cushion_friction);
+  requireFiniteFlag("--mu-s", p.cloth_friction);
+}
+
+std::string vectorText(const Eigen::Vector3d& x) {
+  std::ostringstream out;
+  out.precision(6);
+  out << '(' << x.x() + 0.0 << ", " << x.y() + 0.0 << ", " << x.z() + 0.0 << ')';  // -0 prints as 0
+  return out.str();
+}
+
+const char* contactName(physics::Contact contact) {
+  return contact == physics::Contact::Cushion ? "cushion" : "cloth";
+}
+
+const char* modeName(physics::ContactMode mode) {
+  return mode == physics::ContactMode::Stick ? "stick" : "slip";
+}
+
+void printHuman(const CushionFlags& flags, const physics::BallVelocity& incoming,
+                const physics::CushionImpactResult& result) {
+  const physics::CushionParams& p = flags.params;
+  const CushionShot& shot = flags.shot;
+  const Rebound rebound = reboundOf(result.after);
+  std::ostream& out = std::cout;
+  out << std::setprecision(6);
+  out << "Ball-cushion impact, " << solverName(flags.setting.kind) << " solver ("
+      << settingLabel(flags.setting) << ")\n";
+  out << "  ball:      M = " << p.mass_kg << " kg, R = " << p.radius_m << " m\n";
+  out << "  cushion:   h = " << p.contact_height_m << " m (sin theta = "
+      << physics::contactSinTheta(p) << "), e_e = " << p.restitution
+      << ", mu_w = " << p.cushion_friction << "; cloth mu_s = " << p.cloth_friction << '\n';
+  out << "  incoming:  V0 = " << shot.speed_mps << " m/s at alpha = " << shot.angle_deg
+      << " deg, topspin " << shot.topspin_k << " V0/R, sidespin " << shot.sidespin_k << " V0/R\n";
+  out << "             v = " << vectorText(incoming.v) << " m/s, w = " << vectorText(incoming.w)
+      << " rad/s\n";
+  out << "  outgoing:  v = " << vectorText(result.after.v) << " m/s, w = "
+      << vectorText(result.after.w) << " rad/s\n";
+  out << "  rebound:   speed " << rebound.speed_mps << " m/s at " << rebound.angle_deg
+      << " deg from the cushion line; speed ratio " << rebound.speed_mps / shot.speed_mps << '\n';
+  out << "  impulse:   P_c = " << result.compression_impulse_Ns << " N s (end of compression), P_f = "
+      << result.final_impulse_Ns << " N s; W_c = " << result.compression_work_J << " J\n";
+  out << "  contacts:";
+  if (result.contact_changes.empty()) out << " (stick/slip changes not tracked by this solver)";
+  for (const physics::ContactChange& change : result.contact_changes) {
+    out << "\n    from P = " << change.impulse_Ns << " N s: " << contactName(change.contact) << ' '
+        << (change.mode == physics::ContactMode::Stick ? "sticks" : "slips");
+  }
+  out << "\n  cost:      " << result.rhs_evaluations << " evaluations of dy/dP\n";
+}
+
+nlohmann::json vectorJson(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
+
+void printJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
+               const physics::CushionImpactResult& result) {
+  const physics::CushionParams& p = flags.params;
+  const CushionShot& shot = flags.shot;
+  const Rebound rebound = reboundOf(result.after);
+  nlohmann::json changes = nlohmann::json::array();
+  for (const physics::ContactChange& change : result.contact_changes) {
+    changes.push_back({{"impulse_Ns", change.impulse_Ns},
+                       {"contact", contactName(change.contact)},
+                       {"mode", modeName(change.mode)}});
+  }
+  const nlohmann::json out = {
+      {"solver", solverName(flags.setting.kind)},
+      {"setting", settingLabel(flags.setting)},
+      {"params",
+       {{"mass_kg", p.mass_kg},
+        {"radius_m", p.radius_m},
+        {"contact_height_m", p.contact_height_m},
+        {"restitution", p.restitution},
+        {"cushion_friction", p.cushion_friction},
+        {"cloth_friction", p.cloth_friction}}},
+      {"incoming",
+       {{"speed_mps", shot.speed_mps},
+        {"angle_deg", shot.angle_deg},
+        {"topspin_k", shot.topspin_k},
+        {"sidespin_k", shot.sidespin_k},
+        {"v", vectorJson(incoming.v)},
+        {"w", vectorJson(incoming.w)}}},
+      {"v", vectorJson(result.after.v)},
+      {"w", vectorJson(result.after.w)},
+      {"speed", rebound.speed_mps},
+      {"angle_deg", rebound.angle_deg},
+      {"speed_ratio", rebound.speed_mps / shot.speed_mps},
+      {"compression_impulse_Ns", result.compression_impulse_Ns},
+      {"final_impulse_Ns", result.final_impulse_Ns},
+      {"compression_work_J", result.compression_work_J},
+      {"contact_changes", changes},
+      {"rhs_evaluations", result.rhs_evaluations},
+  };
+  // nlohmann::json writes each double with the shortest digits that read back bit for bit.
+  std::cout << out.dump(2) << '\n';
+}
+
+// The physics names a rejected value by its quantity ("ball mass (kg) = -1 is not allowed: ...");
+// say which flag set it.
+std::string namingTheFlag(const std::string& physics_message) {
+  static const std::pair<const char*, const char*> flag_of_quantity[] = {
+      {"ball mass (kg)", "--mass"},
+      {"ball radius (m)", "--radius"},
+      {"cushion contact height h (m)", "--h"},
+      {"cushion restitution e_e", "--e"},
+      {"cushion friction mu_w", "--mu-w"},
+      {"cloth friction mu_s", "--mu-s"},
+      {"exact solver tolerance", "--tolerance"},
+      {"paper solver steps", "--steps"},
+  };
+  for (const auto& [quantity, flag] : flag_of_quantity) {
+    if (physics_message.rfind(quantity, 0) == 0) return physics_message + " (set by " + flag + ")";
+  }
+  return physics_message;
+}
+
+void solveAndPrint(CushionFlags& flags) {
+  flags.setting.kind = flags.solver == "paper" ? SolverKind::Paper : SolverKind::Exact;
+  if (flags.contact_height_flag->count() == 0) {
+    flags.params.contact_height_m = flags.params.radius_m * 7.0 / 5.0;  // the paper's h = 7R/5
+  }
+  validateFlags(flags);
+  physics::validateCushionParams(flags.params);
+  if (!flags.sweep_directory.empty()) {
+    for (const std::string& path : writeCushionSweep(flags.sweep_directory, flags.params, flags.setting)) {
+      std::cout << "wrote " << path << '\n';
+    }
+    return;
+  }
+  const physics::BallVelocity incoming = incomingBallOf(flags.shot, flags.params.radius_m);
+  const physics::CushionImpactResult result = solveCushionShot(flags.params, incoming, flags.setting);
+  if (flags.json) {
+    printJson(flags, incoming, result);
+  } else {
+    printHuman(flags, incoming, result);
+  }
+}
+
+void runCushion(CushionFlags& flags) {
+  try {
+    solveAndPrint(flags);
+  } catch (const std::invalid_argument& rejected) {
+    throw UsageError(namingTheFlag(rejected.what()));
+  }
+}
+
+}  // namespace
+
+void addCushionCommand(CLI::App& parent) {
+  auto flags = std::make_shared<CushionFlags>();
+  CLI::App* command = parent.add_subcommand(
+      "cushion",
+      "Ball-cushion impact (Mathavan, Jackson & Parkin 2010): rebound of one shot, or with "
+      "--sweep DIR the CSV data of the paper's figures 6, 7, 8 and 10");
+
+  CLI::Option* speed = command->add_option("--speed", flags->shot.speed_mps,
+                                           "incoming speed V0 (m/s)")->capture_default_str();
+  CLI::Option* angle =
+      command->add_option("--angle", flags->shot.angle_deg,
+                          "incidence angle alpha from the cushion line (deg); 90 is head-on")
+          ->capture_default_str();
+  CLI::Option* topspin =
+      command->add_option("--topspin", flags->shot.topspin_k,
+                          "topspin w_T in units of V0/R; 1 is natural roll, negative is backspin")
+          ->capture_default_str();
+  CLI::Option* sidespin =
+      command->add_option("--sidespin", flags->shot.sidespin_k,
+                          "sidespin w_S in units of V0/R; positive is counter-clockwise from above")
+          ->capture_default_str();
+  command->add_option("--solver", flags->solver, "paper (Euler in P, section 3.4) or exact")
+      ->check(CLI::IsMember({"paper", "exact"}))
+      ->capture_default_str();
+  command->add_option("--steps", flags->setting.paper_steps, "paper solver: increments N")
+      ->capture_default_str();
+  command->add_option("--tolerance", flags->setting.exact_tolerance,
+                      "exact solver: local error per step relative to V0")
+      ->capture_default_str();
+
+  command->add_option("--mass", flags->params.mass_kg, "ball mass (kg)")->capture_default_str();
+  command->add_option("--radius", flags->params.radius_m, "ball radius (m)")->capture_default_str();
+  flags->contact_height_flag = command->add_option(
+      "--h", flags->params.contact_height_m,
+      "cushion contact height h above the slate (m); default 7R/5 of the radius in use");
+  command->add_option("--e", flags->params.restitution, "cushion restitution e_e (energetic)")
+      ->capture_default_str();
+  command->add_option("--mu-w", flags->params.cushion_friction, "cushion friction mu_w")
+      ->capture_default_str();
+  command->add_option("--mu-s", flags->params.cloth_friction, "cloth friction mu_s")
+      ->capture_default_str();
+
+  CLI::Option* json = command->add_flag("--json", flags->json, "print one JSON object");
+  command
+      ->add_option("--sweep", flags->sweep_directory,
+                   "write fig6.csv, fig7.csv, fig8.csv and fig10.csv into this directory "
+                   "(created if missing) instead of solving one shot")
+      ->excludes(speed)
+      ->excludes(angle)
+      ->excludes(topspin)
+      ->excludes(sidespin)
+      ->excludes(json);
+
+  command->callback([flags] {
+    if (const int status = runReportingErrors("cushion", [&] { runCushion(*flags); })) {
+      throw CLI::RuntimeError(status);
+    }
+  });
+}
+
+}  // namespace baize::tools
