@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -90,7 +91,8 @@ void requireFinite(const std::string& what, double value) {
 }
 
 // Dimensionless tolerances of the Mathavan integrator, all relative to the problem's scales.
-// Event residuals: far above round-off (~1e-16) yet far below the step error allowed.
+// Event residuals, relative to the approach speed and to the compression work: far above
+// round-off (~1e-16) yet far below the step error allowed.
 constexpr double kEventTolerance = 1e-12;
 // A slip below this fraction of the speed scale counts as zero (stick / direction from the rates).
 constexpr double kSlipFloor = 1e-11;
@@ -243,9 +245,9 @@ struct Integrator {
 // decreasing slip: |s| / (-d|s|/dP).
 double approachLimit(const Eigen::Vector2d& slip, const Eigen::Vector2d& slip_rate, double floor) {
   const double s = slip.norm();
-  if (s <= floor) return INFINITY;
+  if (s <= floor) return std::numeric_limits<double>::infinity();
   const double rate = slip.dot(slip_rate) / s;
-  return rate < 0 ? kApproachFraction * s / -rate : INFINITY;
+  return rate < 0 ? kApproachFraction * s / -rate : std::numeric_limits<double>::infinity();
 }
 
 struct MathavanOutcome {
@@ -257,7 +259,7 @@ struct MathavanOutcome {
 
 double stepLimit(const Model& m, const State& y, const State& dy, bool rolling) {
   const double R = m.R;
-  double limit = INFINITY;
+  double limit = std::numeric_limits<double>::infinity();
   if (!rolling) {
     const Eigen::Vector2d g(slipT(m, y), slipZ(m, y));
     const Eigen::Vector2d g_rate(dy[kV1t] - dy[kV2t] + R * (dy[kW1z] + dy[kW2z]),
@@ -292,7 +294,6 @@ MathavanOutcome integrateAdaptive(const Model& m, const State& y0, double speed_
   for (int i : {kTable1, kTable2, kLift1, kLift2, kFrictionT, kFrictionZ}) {
     integrator.scale[i] = mu_red * speed_scale;
   }
-  const double work_scale = integrator.scale[kWork];
 
   MathavanOutcome out;
   State y = y0, k1;
@@ -304,10 +305,14 @@ MathavanOutcome integrateAdaptive(const Model& m, const State& y0, double speed_
   double h = 0.05 * P_scale;
   integrator.eval(y, rolling, k1);
 
-  // Event functions: positive before the event; the compression one is g_n, the restitution one
-  // is the work still to be returned.
+  // Event functions, positive before the event and scaled by the impact's own size so that grazing
+  // impacts are resolved as finely as head-on ones: g_n / g_n(0) while compressing, then the work
+  // still to be returned over W_c.
+  const double approach = y0[kV1n] - y0[kV2n];
+  double compression_work = 0;
   auto event = [&](const State& s) {
-    return compressing ? (s[kV1n] - s[kV2n]) / speed_scale : (s[kWork] - work_target) / work_scale;
+    return compressing ? (s[kV1n] - s[kV2n]) / approach
+                       : (s[kWork] - work_target) / compression_work;
   };
 
   for (long n = 0;; ++n) {
@@ -361,6 +366,7 @@ MathavanOutcome integrateAdaptive(const Model& m, const State& y0, double speed_
         compressing = false;
         out.P_compression = P;
         out.W_compression = y[kWork];
+        compression_work = y[kWork];
         work_target = (1 - restitution * restitution) * y[kWork];
         if (event(y) <= kEventTolerance) break;  // e = 0: nothing is returned
       } else {
