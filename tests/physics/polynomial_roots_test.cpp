@@ -354,6 +354,11 @@ TEST(PolynomialRootsTest, RootsAtTheIntervalEndsCount) {
   EXPECT_EQ(smallestRootInInterval(c, 2, 2).time, 2);  // a single instant
   EXPECT_EQ(smallestRootInInterval(c, 1, 1).outcome, RootOutcome::NoRoot);
   EXPECT_EQ(rootsInInterval(c, 0.5, 2), (std::vector<double>{0.5, 2}));
+  // A root one ulp beyond the end lies inside the rounding band there (10 u * 2 at t = 1): it
+  // counts, at the end. Far beyond the band it does not.
+  const Coefficients just_outside{-(1 + 0x1p-52), 1, 0, 0, 0};
+  EXPECT_EQ(smallestRootInInterval(just_outside, 0, 1).time, 1);
+  EXPECT_EQ(smallestRootInInterval({-(1 + 1e-12), 1, 0, 0, 0}, 0, 1).outcome, RootOutcome::NoRoot);
   // A quartic root at the end, reached through refinement elsewhere: (t - 1)(t - 2)(t - 3)(t - 4).
   const Coefficients quartic = fromRoots(1, {1, 2, 3, 4});
   EXPECT_EQ(smallestRootInInterval(quartic, 1, 1.5).time, 1);
