@@ -1,13 +1,17 @@
 #include "physics/cushion_exact_solver.h"
 
+#include "physics/value_text.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
-// How the solver works (derivation in docs/cushion.md).
+// How the solver works (the derivation is in docs/cushion.md).
 //
 // Write a = -(friction impulse rate at I) in the basis (x, Y') and b = -(friction impulse rate at C) in
 // (x, y), both per unit of P. While both contacts slip, a = mu_w (cos Phi, sin Phi) and
@@ -17,86 +21,175 @@
 //   u_I(P) = u_I(0) - (1/M) [ 7/2 A_x + (1 - 5s/2) B_x ,  (s^2 + 5/2) A_y + (5/2 - s) B_y - s c P ]
 //   u_C(P) = u_C(0) - (1/M) [ (1 - 5s/2) A_x + 7/2 B_x ,  c P + (5/2 - s) A_y + 7/2 B_y ]
 //
-// (s = sin th, c = cos th; the 4x4 matrix is the inverse effective mass of the two contacts.) So the
-// whole impact is the 5-dimensional system y = (A_x, A_y, B_x, B_y, W) with dy/dP = (a, b, c v_y).
+// (s = sin th, c = cos th; the 4x4 matrix is the contacts' inverse effective mass, times M.) So the
+// impact is the system y = (A_x, A_y, B_x, B_y, W) with dy/dP = (a, b, c v_y). A stuck contact's
+// friction is whatever keeps its slip rate zero (a linear solve), valid while inside its cone.
 //
-// A contact is either slipping (friction mu along its slip) or held (its slip has vanished): a held
-// contact's friction is whatever keeps its slip rate zero (a linear solve), saturated on its friction
-// cone when that is more than the cone allows, which is the sliding-mode (Filippov) friction and
-// makes the contact slip off continuously. The right side is smooth between these changes, and the
-// system is integrated with the Dormand-Prince 5(4) pair:
-// - a slipping contact's slip is approached without ever stepping across its zero (beyond it friction
-//   flips and no error estimate means anything): each step stops short of the linearly predicted
-//   zero, and a slip below the vanishing threshold is held;
-// - a held contact whose slip has grown past a few times that threshold slips again;
-// - the ends of compression (v_y = 0) and of restitution (W = (1 - e^2) W_c, eq. 17b) are located by
-//   Newton's method on the step length, each trial a full Runge-Kutta step.
+// A slipping contact's friction is along u / |u|, which turns infinitely fast as u -> 0: in P the
+// equations are singular there, and steps in P chatter or crawl toward the zero. So the independent
+// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + L |du/dP|). In tau
+// a slip that vanishes decays exponentially and one that turns does so smoothly (its direction turns
+// at most about 1/L per unit tau), while a slip far from zero, or one that changes slowly, runs at
+// sigma ~ 1. When a slip is below the vanishing threshold the contact
+// sticks if its friction cone can hold it; otherwise it slips off along the one direction in which
+// its slip grows along itself. A stuck contact whose cone stops holding it (an event) slips along the
+// friction it needed, so friction stays continuous.
+//
+// The system in tau is integrated with the Dormand-Prince 8(5,3) pair. The ends of compression
+// (v_y = 0) and restitution (W = (1 - e^2) W_c, eq. 17b) and the instants a stuck contact breaks are
+// events, located by Newton's method (or Illinois regula falsi) on the step length, each trial a full
+// Runge-Kutta step.
 
 namespace baize::physics {
 namespace {
 
-using State = Eigen::Matrix<double, 5, 1>;  // (A_x, A_y, B_x, B_y: N s; W: J)
-enum : int { kAx = 0, kAy = 1, kBx = 2, kBy = 3, kWork = 4 };
+using State = Eigen::Matrix<double, 6, 1>;  // (P, A_x, A_y, B_x, B_y: N s; W: J)
+enum : int { kP = 0, kAx = 1, kAy = 2, kBx = 3, kBy = 4, kWork = 5 };
 
-// A slip below this fraction of (tolerance x velocity scale) has vanished and the contact is held.
-// Taking it as zero moves the result by about that much: the remaining impulse to its true zero is
-// about M |u| / (7/2 mu), over which friction of any direction changes the velocities by less than |u|.
-constexpr double kHeldSlipFraction = 1;
-// A slip below this multiple of the vanishing threshold that grew over the last step although friction
-// could hold it is chattering: Coulomb friction that can hold a contact makes its slip shrink, so the
-// growth is friction overshooting about zero, the discrete picture of a contact that sticks. It is
-// held.
-constexpr double kChatterSlipMultiple = 1000;
-// A held contact slips again once its slip exceeds this multiple of the vanishing threshold. Below it
-// a held contact whose friction saturates slides on the edge of its cone with a slip so small that its
-// direction is stiff; the saturated friction already describes that sliding, with the direction of
-// the friction it needs, and the gap keeps contacts from flickering between the two states.
-constexpr double kReleaseSlipMultiple = 1000;
-// Steps toward a vanishing slip stop this fraction short of its linearly predicted zero; each step
-// then cuts the slip by about this factor.
-constexpr double kAimShortMin = 1e-3;
-// When such a step fails the error test the slip turns as it vanishes: stop further short, by this
-// factor up to the maximum, instead of shrinking the step blindly.
-constexpr double kAimShortGrowth = 8;
-constexpr double kAimShortMax = 0.5;
+// s0 of the change of variable, as a fraction of the velocity scale: below it a slipping contact's
+// own slip sets the pace (its direction turns over impulses of about M |u| / mu). A held contact whose
+// slip grows to it slips on as an ordinary slipping contact.
+constexpr double kRegularizingSlipFraction = 1e-3;
+// A slip below this fraction of (tolerance x velocity scale) has vanished. It must lie above what the
+// integration resolves of a slip (impulse errors of tolerance x M V reach the slips through the contact
+// matrix, whose entries are up to 7/2, as about 3.5 tolerance x V), and taking it as zero moves the
+// result by about that much: the remaining impulse to its true zero is about M |u| / (7/2 mu), over
+// which friction of any direction changes the velocities by less than |u|.
+constexpr double kVanishedSlipFraction = 10;
+// A held contact sliding along phi* slips as its own slip says once its slip's misalignment with phi*
+// (|u| sin angle, which measures what the held law has missed) reaches this fraction of
+// (tolerance x velocity scale).
+constexpr double kCreepErrorFraction = 10;
+// A slipping contact whose slip stays below this multiple of the vanishing threshold for this many
+// accepted steps has vanished: it lies within the integration's noise of zero and would only wander
+// there (a slip that friction can barely hold decays very slowly). Taking it as zero moves the result
+// by less than that multiple of the threshold.
+constexpr double kStagnantSlipMultiple = 10;
+constexpr int kStagnantSlipSteps = 50;
+// A slipping contact whose slip is below this fraction of the regularizing slip is checked for
+// steady sliding on the edge of its cone (see slidesSteadily).
+constexpr double kSteadyCreepFraction = 0.1;
+// A held contact whose cone could hold it again slips on (and its slip shrinks) only once its slip
+// is this multiple of the vanishing threshold, so that contacts do not flicker on rounding.
+constexpr double kReleaseSlipMultiple = 2;
+// Newton's method for phi*: the angle step of its numerical derivative (rad), the largest turn per
+// iteration (rad), the convergence test (rad) and the iteration limit.
+constexpr double kCreepAngleStep = 1e-6;
+constexpr double kCreepMaxTurn = 0.5;
+constexpr double kCreepAngleTolerance = 1e-10;
+constexpr int kMaxCreepIterations = 30;
+// A floor under |du/dP| (times M) that keeps phi*'s equation defined where the rate vanishes.
+constexpr double kRateFloor = 1e-9;
+// A held contact sticks only while its friction lies this fraction inside its cone (rounding in the
+// stick solve): at the edge it slides, so that a located break takes effect where it is located.
+constexpr double kConeSlackRelative = 1e-12;
 // An event is located when its function is this small against its scale times the tolerance...
-constexpr double kEventResidualFraction = 1e-3;
-// ...or when the bracket on the step length is this many rounding units of P wide.
+constexpr double kEventResidualFraction = 1e-4;
+// ...or when the bracket on the step length is this many rounding units wide.
 constexpr double kEventBracketUlps = 8;
+// The smallest share of the impulse scale a step's error allowance is cut to (error per unit step):
+// steps in the change of variable near a vanishing slip advance P very little and need no less.
+constexpr double kMinErrorShare = 0.1;
 // Step-size control of the embedded pair: safety factor and bounds on the change per step.
 constexpr double kStepSafety = 0.9;
-constexpr double kStepMinFactor = 0.2;
-constexpr double kStepMaxFactor = 5.0;
+constexpr double kStepMinFactor = 1.0 / 3;
+constexpr double kStepMaxFactor = 6.0;
 // First step as a fraction of M v_y0, the scale of the whole normal impulse.
-constexpr double kFirstStepFraction = 0.05;
-// Logic guards, far above anything the bounded equations need (a typical impact takes 10-60 steps).
+constexpr double kFirstStepFraction = 0.2;
+// Samples on the circle when searching for the direction a contact slips off in from rest.
+constexpr int kDirectionSamples = 72;
+// The tolerances accepted: below 1e-14 the slips are not resolved in double precision; above 1e-2 the
+// events are not located meaningfully.
+constexpr double kMinTolerance = 1e-14;
+constexpr double kMaxTolerance = 1e-2;
+// Logic guards, far above what the bounded equations need (an impact takes tens of steps and a few
+// contact changes).
 constexpr int kMaxSteps = 100000;
+constexpr int kMaxContactChanges = 1000;
 constexpr int kMaxEventIterations = 60;
 
 constexpr double kEpsilon = 2.220446049250313e-16;
 
-// Dormand-Prince 5(4) coefficients (Dormand & Prince 1980).
-constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
-constexpr double a21 = 1.0 / 5;
-constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
-constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
-constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561,
-                 a54 = -212.0 / 729;
-constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
-                 a65 = -5103.0 / 18656;
-constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784,
-                 b6 = 11.0 / 84;
-// Fifth-order weights minus the embedded fourth-order ones: the local error estimate.
-constexpr double e1 = 35.0 / 384 - 5179.0 / 57600, e3 = 500.0 / 1113 - 7571.0 / 16695,
-                 e4 = 125.0 / 192 - 393.0 / 640, e5 = -2187.0 / 6784 + 92097.0 / 339200,
-                 e6 = 11.0 / 84 - 187.0 / 2100, e7 = -1.0 / 40;
+// The Dormand-Prince 8(5,3) pair (Hairer, Norsett & Wanner, Solving ODEs I, 2nd ed., section II.10):
+// 12 stages, the last evaluation reused as the next step's first; error estimated from embedded 5th-
+// and 3rd-order solutions.
+namespace dp853 {
+constexpr double a21 = 5.26001519587677318785587544488e-2;
+constexpr double a31 = 1.97250569845378994544595329183e-2, a32 = 5.91751709536136983633785987549e-2;
+constexpr double a41 = 2.95875854768068491816892993775e-2, a43 = 8.87627564304205475450678981324e-2;
+constexpr double a51 = 2.41365134159266685502369798665e-1, a53 = -8.84549479328286085344864962717e-1,
+                 a54 = 9.24834003261792003115737966543e-1;
+constexpr double a61 = 3.7037037037037037037037037037e-2, a64 = 1.70828608729473871279604482173e-1,
+                 a65 = 1.25467687566822425016691814123e-1;
+constexpr double a71 = 3.7109375e-2, a74 = 1.70252211019544039314978060272e-1,
+                 a75 = 6.02165389804559606850219397283e-2, a76 = -1.7578125e-2;
+constexpr double a81 = 3.70920001185047927108779319836e-2, a84 = 1.70383925712239993810214054705e-1,
+                 a85 = 1.07262030446373284651809199168e-1, a86 = -1.53194377486244017527936158236e-2,
+                 a87 = 8.27378916381402288758473766002e-3;
+constexpr double a91 = 6.24110958716075717114429577812e-1, a94 = -3.36089262944694129406857109825e0,
+                 a95 = -8.68219346841726006818189891453e-1, a96 = 2.75920996994467083049415600797e1,
+                 a97 = 2.01540675504778934086186788979e1, a98 = -4.34898841810699588477366255144e1;
+constexpr double a101 = 4.77662536438264365890433908527e-1, a104 = -2.48811461997166764192642586468e0,
+                 a105 = -5.90290826836842996371446475743e-1, a106 = 2.12300514481811942347288949897e1,
+                 a107 = 1.52792336328824235832596922938e1, a108 = -3.32882109689848629194453265587e1,
+                 a109 = -2.03312017085086261358222928593e-2;
+constexpr double a111 = -9.3714243008598732571704021658e-1, a114 = 5.18637242884406370830023853209e0,
+                 a115 = 1.09143734899672957818500254654e0, a116 = -8.14978701074692612513997267357e0,
+                 a117 = -1.85200656599969598641566180701e1, a118 = 2.27394870993505042818970056734e1,
+                 a119 = 2.49360555267965238987089396762e0, a1110 = -3.0467644718982195003823669022e0;
+constexpr double a121 = 2.27331014751653820792359768449e0, a124 = -1.05344954667372501984066689879e1,
+                 a125 = -2.00087205822486249909675718444e0, a126 = -1.79589318631187989172765950534e1,
+                 a127 = 2.79488845294199600508499808837e1, a128 = -2.85899827713502369474065508674e0,
+                 a129 = -8.87285693353062954433549289258e0, a1210 = 1.23605671757943030647266201528e1,
+                 a1211 = 6.43392746015763530355970484046e-1;
+constexpr double b1 = 5.42937341165687622380535766363e-2, b6 = 4.45031289275240888144113950566e0,
+                 b7 = 1.89151789931450038304281599044e0, b8 = -5.8012039600105847814672114227e0,
+                 b9 = 3.1116436695781989440891606237e-1, b10 = -1.52160949662516078556178806805e-1,
+                 b11 = 2.01365400804030348374776537501e-1, b12 = 4.47106157277725905176885569043e-2;
+constexpr double bhh1 = 0.244094488188976377952755905512, bhh2 = 0.733846688281611857341361741547,
+                 bhh3 = 0.220588235294117647058823529412e-1;
+constexpr double er1 = 0.1312004499419488073250102996e-1, er6 = -0.1225156446376204440720569753e1,
+                 er7 = -0.4957589496572501915214079952, er8 = 0.1664377182454986536961530415e1,
+                 er9 = -0.3503288487499736816886487290, er10 = 0.3341791187130174790297318841,
+                 er11 = 0.8192320648511571246570742613e-1, er12 = -0.2235530786388629525884427845e-1;
+// The 3rd-order estimate's weight in the combined error estimate.
+constexpr double kThirdOrderWeight = 0.01;
+}  // namespace dp853
+
+double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() * q.y() - p.y() * q.x(); }
+
+double stepFactor(double error) {
+  if (!(error > 0)) return kStepMaxFactor;
+  return std::clamp(kStepSafety * std::pow(error, -1.0 / 8), kStepMinFactor, kStepMaxFactor);
+}
+
+// The root in (0, 1) of the cubic with values g0 > 0 and g1 <= 0 and slopes d0, d1 at 0 and 1
+// (bisection safeguarded Newton; the cubic need not be monotone, the bracket keeps it in range).
+double hermiteRoot(double g0, double d0, double g1, double d1) {
+  auto value = [&](double t) {
+    const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
+    const double h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
+    return h00 * g0 + h10 * d0 + h01 * g1 + h11 * d1;
+  };
+  double lo = 0, hi = 1, t = g0 / (g0 - g1);
+  for (int it = 0; it < 40; ++it) {
+    const double v = value(t);
+    (v > 0 ? lo : hi) = t;
+    const double slope = (value(t + 1e-7) - value(t - 1e-7)) / 2e-7;
+    double next = slope != 0 ? t - v / slope : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - t) < 1e-14) return next;
+    t = next;
+  }
+  return t;
+}
 
 struct ContactState {
   bool frictionless = false;
   ContactMode mode = ContactMode::Slip;                  // Stick: held (see the top of the file)
-  Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  // last slip direction, for a slip of exactly 0
-  double aim_short = kAimShortMin;                       // see kAimShortMin
-  Eigen::Vector2d previous_slip = Eigen::Vector2d::Zero();  // at the start of the last accepted step
+  Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  // slip direction for a slip of exactly zero
+  Eigen::Vector2d creep = Eigen::Vector2d::UnitX();      // held: where to start looking for phi*
+  int small_slip_steps = 0;  // consecutive accepted steps with a slip below kStagnantSlipMultiple
 };
 
 struct Friction {
@@ -104,16 +197,17 @@ struct Friction {
   Eigen::Vector2d b = Eigen::Vector2d::Zero();  // at C, per unit P, along the slip
 };
 
+// Per contact: whether its friction follows the stick law, and otherwise its slip direction.
+struct Laws {
+  std::array<bool, 2> stick = {false, false};
+  std::array<Eigen::Vector2d, 2> direction = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+};
+
 struct Step {
-  State y;
+  State z;
   State rate_at_end;  // FSAL: the rate at the step's end, reused as the next step's first stage
   double error = 0;   // scaled error norm; <= 1 accepts
 };
-
-double stepFactor(double error) {
-  if (!(error > 0)) return kStepMaxFactor;
-  return std::clamp(kStepSafety * std::pow(error, -0.2), kStepMinFactor, kStepMaxFactor);
-}
 
 class ExactImpact {
  public:
@@ -122,149 +216,340 @@ class ExactImpact {
     s_ = contactSinTheta(params);
     c_ = std::sqrt(1 - s_ * s_);
     M_ = params.mass_kg;
+    inverse_mass_ = 1 / M_;
     mu_ = {params.cushion_friction, params.cloth_friction};
     slip0_ = {cushionSlip(params, incoming), clothSlip(params, incoming)};
     vy0_ = incoming.v.y();
     velocity_scale_ = incoming.v.norm() + params.radius_m * incoming.w.norm();
     const double impulse_scale = M_ * velocity_scale_;
-    for (int i = 0; i < 4; ++i) error_scale_[i] = options.tolerance * impulse_scale;
+    impulse_scale_ = impulse_scale;
+    for (int i = 0; i < kWork; ++i) error_scale_[i] = options.tolerance * impulse_scale;
     error_scale_[kWork] = options.tolerance * impulse_scale * velocity_scale_;
-    held_slip_ = kHeldSlipFraction * options.tolerance * velocity_scale_;
+    vanished_slip_ = kVanishedSlipFraction * options.tolerance * velocity_scale_;
+    regularizing_slip_ = kRegularizingSlipFraction * velocity_scale_;
+    creep_error_limit_ = kCreepErrorFraction * options.tolerance * velocity_scale_;
     for (int k = 0; k < 2; ++k) contacts_[k].frictionless = mu_[k] == 0;
-    // The inverse effective mass of the two contacts (see the top of the file), times M.
-    const double coupling_x = 1 - 2.5 * s_, coupling_y = 2.5 - s_;
-    delassus_ << 3.5, 0, coupling_x, 0,  //
-        0, s_ * s_ + 2.5, 0, coupling_y,     //
-        coupling_x, 0, 3.5, 0,               //
-        0, coupling_y, 0, 3.5;
+    coupling_x_ = 1 - 2.5 * s_;
+    coupling_y_ = 2.5 - s_;
+    diagonal_y_ = s_ * s_ + 2.5;
   }
 
   CushionImpactResult run();
 
  private:
-  Eigen::Vector2d slip(int k, double P, const State& y) const {
-    const Eigen::Vector4d response = delassus_ * Eigen::Vector4d(y[kAx], y[kAy], y[kBx], y[kBy]);
-    if (k == 0) return slip0_[0] - Eigen::Vector2d(response[0], response[1] - s_ * c_ * P) / M_;
-    return slip0_[1] - Eigen::Vector2d(response[2], response[3] + c_ * P) / M_;
+  bool slipping(int k) const { return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Slip; }
+  bool held(int k) const { return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Stick; }
+
+  // The contact matrix (see the top of the file) times (a_x, a_y, b_x, b_y); half its entries are 0.
+  Eigen::Vector4d contactResponse(double ax, double ay, double bx, double by) const {
+    return {3.5 * ax + coupling_x_ * bx, diagonal_y_ * ay + coupling_y_ * by, coupling_x_ * ax + 3.5 * bx,
+            coupling_y_ * ay + 3.5 * by};
   }
 
-  double normalVelocity(double P, const State& y) const {  // v_y
-    return vy0_ - (c_ * P - s_ * y[kAy] + y[kBy]) / M_;
+  // Both slips at z: (u_I, u_C).
+  std::array<Eigen::Vector2d, 2> slips(const State& z) const {
+    const Eigen::Vector4d response = contactResponse(z[kAx], z[kAy], z[kBx], z[kBy]);
+    return {Eigen::Vector2d(slip0_[0] - Eigen::Vector2d(response[0], response[1] - s_ * c_ * z[kP]) / M_),
+            Eigen::Vector2d(slip0_[1] - Eigen::Vector2d(response[2], response[3] + c_ * z[kP]) / M_)};
   }
+  Eigen::Vector2d slip(int k, const State& z) const { return slips(z)[k]; }
 
-  Eigen::Vector2d slipDirection(int k, const Eigen::Vector2d& u) const {
-    const double speed = u.norm();
-    return speed > 0 ? Eigen::Vector2d(u / speed) : contacts_[k].direction;
-  }
+  double normalVelocity(const State& z) const { return vy0_ - (c_ * z[kP] - s_ * z[kAy] + z[kBy]) / M_; }
 
-  // Friction per unit P for the current contact states, given both slips.
-  Friction friction(const Eigen::Vector2d& slip_I, const Eigen::Vector2d& slip_C) const {
-    const bool held_I = !contacts_[0].frictionless && contacts_[0].mode == ContactMode::Stick;
-    const bool held_C = !contacts_[1].frictionless && contacts_[1].mode == ContactMode::Stick;
+  // Friction per unit P under the given laws (a contact with a zero direction has no friction).
+  Friction frictionFor(const Laws& laws) const {
     const double s = s_, c = c_;
+    const bool stick_I = !contacts_[0].frictionless && laws.stick[0];
+    const bool stick_C = !contacts_[1].frictionless && laws.stick[1];
+    const Eigen::Vector2d slide_I = contacts_[0].frictionless ? Eigen::Vector2d::Zero() : laws.direction[0];
+    const Eigen::Vector2d slide_C = contacts_[1].frictionless ? Eigen::Vector2d::Zero() : laws.direction[1];
     Friction f;
-    if (held_I && held_C) {  // both held: the x pair gives 0, the y pair a 2x2 solve
+    if (stick_I && stick_C) {  // the x pair gives 0, the y pair a 2x2 solve
       const double det = 3.5 * (s * s + 2.5) - (2.5 - s) * (2.5 - s);
       f.a.y() = c * (2.5 + 2.5 * s) / det;
       f.b.y() = -f.a.y();
-    } else if (held_I) {  // the cloth slips (or is frictionless); its force couples through q = s + c a_y
-      const Eigen::Vector2d g = contacts_[1].frictionless
-                                    ? Eigen::Vector2d::Zero()
-                                    : Eigen::Vector2d(mu_[1] * slipDirection(1, slip_C));
+    } else if (stick_I) {  // the cloth slides; its force couples through q = s + c a_y
+      const Eigen::Vector2d g = mu_[1] * slide_C;
       f.a.y() = (s * c - (2.5 - s) * s * g.y()) / ((s * s + 2.5) + (2.5 - s) * c * g.y());
       const double table_rate = s + c * f.a.y();
       f.a.x() = -(1 - 2.5 * s) * table_rate * g.x() / 3.5;
       f.b = table_rate * g;
     } else {
-      if (!contacts_[0].frictionless) f.a = mu_[0] * slipDirection(0, slip_I);
-      if (held_C) {
+      f.a = mu_[0] * slide_I;
+      if (stick_C) {
         f.b = Eigen::Vector2d(-(1 - 2.5 * s) * f.a.x() / 3.5, -(c + (2.5 - s) * f.a.y()) / 3.5);
-      } else if (!contacts_[1].frictionless) {
-        f.b = mu_[1] * (s + c * f.a.y()) * slipDirection(1, slip_C);
+      } else {
+        f.b = mu_[1] * (s + c * f.a.y()) * slide_C;
       }
-    }
-    // A held contact whose friction cannot hold it gets the most its cone gives, along the friction
-    // it needs: it then slips off continuously.
-    if (held_I && f.a.norm() > mu_[0]) f.a *= mu_[0] / f.a.norm();
-    if (held_C) {
-      const double limit = mu_[1] * (s + c * f.a.y());
-      if (f.b.norm() > limit) f.b *= limit / f.b.norm();
     }
     return f;
   }
 
-  // d(slip_k)/dP for friction rates r (the first four components of a rate).
-  Eigen::Vector2d slipRate(int k, const State& r) const {
-    const Eigen::Vector4d response = delassus_ * Eigen::Vector4d(r[kAx], r[kAy], r[kBx], r[kBy]);
+  // d(slip_k)/dP under friction f.
+  Eigen::Vector2d slipRate(int k, const Friction& f) const {
+    const Eigen::Vector4d response = contactResponse(f.a.x(), f.a.y(), f.b.x(), f.b.y());
     if (k == 0) return -Eigen::Vector2d(response[0], response[1] - s_ * c_) / M_;
     return -Eigen::Vector2d(response[2], response[3] + c_) / M_;
   }
 
-  State rate(double P, const State& y) {
+  // How far inside its friction cone contact k's friction is, as a fraction of the cone.
+  double coneMargin(int k, const Friction& f) const {
+    if (k == 0) return 1 - f.a.norm() / mu_[0];
+    return 1 - f.b.norm() / (mu_[1] * (s_ + c_ * f.a.y()));
+  }
+
+  // The direction phi* a held contact k slides along when its cone cannot hold it: the slip it then
+  // makes grows along phi* (cross(phi*, du_k/dP) = 0 with du_k/dP . phi* > 0). Newton on the angle
+  // from `guess`; returns false if that does not converge to such a direction.
+  bool creepDirection(int k, Laws laws, const Eigen::Vector2d& guess, Eigen::Vector2d* result) const {
+    laws.stick[k] = false;
+    auto turn = [&](double phi, double* growth) {
+      laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
+      const Eigen::Vector2d r = slipRate(k, frictionFor(laws));
+      if (growth) *growth = r.dot(laws.direction[k]);
+      return cross(laws.direction[k], r) / (r.norm() + kRateFloor / M_);
+    };
+    double phi = std::atan2(guess.y(), guess.x());
+    for (int it = 0; it < kMaxCreepIterations; ++it) {
+      const double value = turn(phi, nullptr);
+      const double slope = (turn(phi + kCreepAngleStep, nullptr) - turn(phi - kCreepAngleStep, nullptr)) /
+                           (2 * kCreepAngleStep);
+      if (!(slope != 0)) break;
+      const double change = std::clamp(-value / slope, -kCreepMaxTurn, kCreepMaxTurn);
+      phi += change;
+      if (std::abs(change) <= kCreepAngleTolerance) {
+        double growth = 0;
+        turn(phi, &growth);
+        if (!(growth > 0)) return false;
+        *result = Eigen::Vector2d(std::cos(phi), std::sin(phi));
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The same by a search over the whole circle (robust, for a first guess): of the directions along
+  // which the slip grows along itself, the one where it grows fastest.
+  Eigen::Vector2d creepDirectionSearch(int k, Laws laws) const {
+    laws.stick[k] = false;
+    auto rateAlong = [&](double phi) {
+      laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
+      return slipRate(k, frictionFor(laws));
+    };
+    auto turn = [&](double phi) { return cross(Eigen::Vector2d(std::cos(phi), std::sin(phi)), rateAlong(phi)); };
+    const double spacing = 2 * M_PI / kDirectionSamples;
+    std::array<double, kDirectionSamples + 1> turns;
+    for (int i = 0; i <= kDirectionSamples; ++i) turns[i] = turn(i * spacing);
+    double best_growth = 0, best_phi = 0;
+    for (int i = 0; i < kDirectionSamples; ++i) {
+      if ((turns[i] <= 0) == (turns[i + 1] <= 0)) continue;
+      double lo = i * spacing, hi = (i + 1) * spacing;
+      const bool lo_negative = turns[i] <= 0;
+      for (int it = 0; it < 60 && hi - lo > 4 * kEpsilon; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        ((turn(mid) <= 0) == lo_negative ? lo : hi) = mid;
+      }
+      const double phi = 0.5 * (lo + hi);
+      const double growth = rateAlong(phi).dot(Eigen::Vector2d(std::cos(phi), std::sin(phi)));
+      if (growth > best_growth) {
+        best_growth = growth;
+        best_phi = phi;
+      }
+    }
+    if (best_growth > 0) return Eigen::Vector2d(std::cos(best_phi), std::sin(best_phi));
+    // None (not expected: the contact matrix is positive definite): along the rate it would get.
+    const Eigen::Vector2d r = rateAlong(0) + rateAlong(M_PI);
+    return r.norm() > 0 ? Eigen::Vector2d(r.normalized()) : Eigen::Vector2d::UnitX();
+  }
+
+  // The laws in force at slips u: slipping contacts slide along their slips; held contacts stick if
+  // their cones can hold them and otherwise slide along phi* (found from their `creep` guesses).
+  Laws lawsAt(const std::array<Eigen::Vector2d, 2>& u, std::array<double, 2>* speed) const {
+    Laws laws;
+    for (int k = 0; k < 2; ++k) {
+      const double size = u[k].norm();
+      if (speed) (*speed)[k] = size;
+      laws.stick[k] = held(k);
+      laws.direction[k] = size > 0 ? Eigen::Vector2d(u[k] / size) : contacts_[k].direction;
+    }
+    if (!held(0) && !held(1)) return laws;
+    for (int round = 0; round < 2; ++round) {
+      const Friction f = frictionFor(laws);
+      bool changed = false;
+      for (int k = 0; k < 2; ++k) {
+        if (!laws.stick[k] || held(k) == false || coneMargin(k, f) >= kConeSlackRelative) continue;
+        Eigen::Vector2d phi;
+        if (!creepDirection(k, laws, contacts_[k].creep, &phi)) phi = creepDirectionSearch(k, laws);
+        laws.stick[k] = false;
+        laws.direction[k] = phi;
+        changed = true;
+      }
+      if (!changed) break;
+    }
+    return laws;
+  }
+
+  // dz/dtau.
+  State rate(const State& z) {
     ++evaluations_;
-    const Friction f = friction(slip(0, P, y), slip(1, P, y));
+    if (!held(0) && !held(1)) return slidingRate(z);
+    std::array<double, 2> speed;
+    const Laws laws = lawsAt(slips(z), &speed);
+    const Friction f = frictionFor(laws);
+    double sigma = 1;  // dP/dtau
+    for (int k = 0; k < 2; ++k) {
+      if (slipping(k)) sigma *= speed[k] / (speed[k] + regularizing_slip_);
+    }
     State r;
-    r << f.a.x(), f.a.y(), f.b.x(), f.b.y(), c_ * normalVelocity(P, y);
+    r << 1, f.a.x(), f.a.y(), f.b.x(), f.b.y(), c_ * normalVelocity(z);
+    return sigma * r;
+  }
+
+  // rate() when no contact is held (most of every impact), written out: the same equations as
+  // slips(), frictionFor() and the change of variable, without the general laws' bookkeeping.
+  State slidingRate(const State& z) const {
+    const double P = z[kP], ax = z[kAx], ay = z[kAy], bx = z[kBx], by = z[kBy];
+    double sigma_numerator = 1, sigma_denominator = 1, fax = 0, fay = 0, fbx = 0, fby = 0;
+    if (slipping(0)) {
+      const double ux = slip0_[0].x() - (3.5 * ax + coupling_x_ * bx) * inverse_mass_;
+      const double uy = slip0_[0].y() - (diagonal_y_ * ay + coupling_y_ * by - s_ * c_ * P) * inverse_mass_;
+      const double speed = std::sqrt(ux * ux + uy * uy);
+      if (speed > 0) {
+        const double scale = mu_[0] / speed;
+        fax = scale * ux;
+        fay = scale * uy;
+      } else {
+        fax = mu_[0] * contacts_[0].direction.x();
+        fay = mu_[0] * contacts_[0].direction.y();
+      }
+      sigma_numerator *= speed;
+      sigma_denominator *= speed + regularizing_slip_;
+    }
+    if (slipping(1)) {
+      const double ux = slip0_[1].x() - (coupling_x_ * ax + 3.5 * bx) * inverse_mass_;
+      const double uy = slip0_[1].y() - (c_ * P + coupling_y_ * ay + 3.5 * by) * inverse_mass_;
+      const double speed = std::sqrt(ux * ux + uy * uy);
+      const double limit = mu_[1] * (s_ + c_ * fay);
+      if (speed > 0) {
+        const double scale = limit / speed;
+        fbx = scale * ux;
+        fby = scale * uy;
+      } else {
+        fbx = limit * contacts_[1].direction.x();
+        fby = limit * contacts_[1].direction.y();
+      }
+      sigma_numerator *= speed;
+      sigma_denominator *= speed + regularizing_slip_;
+    }
+    const double sigma = sigma_numerator / sigma_denominator;
+    const double vy = vy0_ - (c_ * P - s_ * ay + by) * inverse_mass_;
+    State r;
+    r << sigma, sigma * fax, sigma * fay, sigma * fbx, sigma * fby, sigma * c_ * vy;
     return r;
   }
 
-  Step rungeKuttaStep(double P, const State& y, const State& k1, double h) {
-    const State k2 = rate(P + c2 * h, y + h * (a21 * k1));
-    const State k3 = rate(P + c3 * h, y + h * (a31 * k1 + a32 * k2));
-    const State k4 = rate(P + c4 * h, y + h * (a41 * k1 + a42 * k2 + a43 * k3));
-    const State k5 = rate(P + c5 * h, y + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4));
-    const State k6 = rate(P + h, y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5));
+  Step rungeKuttaStep(const State& z, const State& k1, double h) {
+    using namespace dp853;
+    const State k2 = rate(z + h * (a21 * k1));
+    const State k3 = rate(z + h * (a31 * k1 + a32 * k2));
+    const State k4 = rate(z + h * (a41 * k1 + a43 * k3));
+    const State k5 = rate(z + h * (a51 * k1 + a53 * k3 + a54 * k4));
+    const State k6 = rate(z + h * (a61 * k1 + a64 * k4 + a65 * k5));
+    const State k7 = rate(z + h * (a71 * k1 + a74 * k4 + a75 * k5 + a76 * k6));
+    const State k8 = rate(z + h * (a81 * k1 + a84 * k4 + a85 * k5 + a86 * k6 + a87 * k7));
+    const State k9 = rate(z + h * (a91 * k1 + a94 * k4 + a95 * k5 + a96 * k6 + a97 * k7 + a98 * k8));
+    const State k10 =
+        rate(z + h * (a101 * k1 + a104 * k4 + a105 * k5 + a106 * k6 + a107 * k7 + a108 * k8 + a109 * k9));
+    const State k11 = rate(z + h * (a111 * k1 + a114 * k4 + a115 * k5 + a116 * k6 + a117 * k7 + a118 * k8 +
+                                    a119 * k9 + a1110 * k10));
+    const State k12 = rate(z + h * (a121 * k1 + a124 * k4 + a125 * k5 + a126 * k6 + a127 * k7 + a128 * k8 +
+                                    a129 * k9 + a1210 * k10 + a1211 * k11));
+    const State slope = b1 * k1 + b6 * k6 + b7 * k7 + b8 * k8 + b9 * k9 + b10 * k10 + b11 * k11 + b12 * k12;
     Step step;
-    step.y = y + h * (b1 * k1 + b3 * k3 + b4 * k4 + b5 * k5 + b6 * k6);
-    step.rate_at_end = rate(P + h, step.y);
-    const State error = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * step.rate_at_end);
-    step.error = error.cwiseAbs().cwiseQuotient(error_scale_).maxCoeff();
+    step.z = z + h * slope;
+    step.rate_at_end = rate(step.z);
+    // Combined estimate: |h| e5^2 / sqrt(n (e5^2 + w e3^2)), the norms scaled by the tolerances.
+    const State third = (slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12).cwiseQuotient(error_scale_);
+    const State fifth = (er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 + er11 * k11 +
+                         er12 * k12).cwiseQuotient(error_scale_);
+    const double fifth_squared = fifth.squaredNorm(), third_squared = third.squaredNorm();
+    double denominator = fifth_squared + kThirdOrderWeight * third_squared;
+    if (!(denominator > 0)) denominator = 1;
+    const double error = std::abs(h) * fifth_squared / std::sqrt(State::RowsAtCompileTime * denominator);
+    // Error per unit step: a step may add error in proportion to the share of the impact's impulse it
+    // covers, so the errors of many steps add up to about the tolerance, not to their number times it.
+    const double share = std::max(std::abs(step.z[kP] - z[kP]) / impulse_scale_, kMinErrorShare);
+    step.error = error / share;
     return step;
   }
 
-  // The phase-ending event: positive before it; v_y in compression, W - W_target in restitution.
-  double phaseEvent(double P, const State& y) const {
-    return compressing_ ? normalVelocity(P, y) : y[kWork] - work_target_;
+  // Located events, each a function positive before it: the end of the phase (v_y in compression,
+  // W - (1 - e^2) W_c in restitution), and for a held contact the instants its cone stops holding it
+  // (it starts to slide along phi*) and holds it again (the margin of its needed friction).
+  struct Event {
+    bool phase_end = true;
+    int contact = 0;     // for a held contact's events
+    double sign = 1;     // +1: its cone stops holding it; -1: its cone holds it again
+  };
+  double eventValue(const Event& event, const State& z) const {
+    if (event.phase_end) return compressing_ ? normalVelocity(z) : z[kWork] - work_target_;
+    return event.sign * neededMargin(event.contact, z);
   }
-  double phaseEventSlope(const State& r) const {  // its derivative in P along the solution
-    return compressing_ ? -(c_ - s_ * r[kAy] + r[kBy]) / M_ : r[kWork];
+  double eventSlope(const Event& event, const State& r) const {  // d/dtau from the rate there; -1: none
+    if (!event.phase_end) return -1;
+    return compressing_ ? -(c_ * r[kP] - s_ * r[kAy] + r[kBy]) / M_ : r[kWork];
   }
-  double phaseEventScale() const {
-    return compressing_ ? velocity_scale_ : M_ * velocity_scale_ * velocity_scale_;
+  double eventTolerance(const Event& event) const {
+    if (!event.phase_end) return kEventResidualFraction * options_.tolerance;
+    const double scale = compressing_ ? velocity_scale_ : M_ * velocity_scale_ * velocity_scale_;
+    return kEventResidualFraction * options_.tolerance * scale;
+  }
+  // How far inside its cone held contact k's stick friction would be at z (negative: outside).
+  double neededMargin(int k, const State& z) const {
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
+    Laws laws;
+    for (int j = 0; j < 2; ++j) {
+      laws.stick[j] = held(j);
+      laws.direction[j] = u[j].norm() > 0 ? Eigen::Vector2d(u[j].normalized()) : contacts_[j].direction;
+    }
+    return coneMargin(k, frictionFor(laws));
   }
 
-  // Finds the step length in (0, h] that lands on the phase event, which the full step crossed:
-  // safeguarded Newton on the length (each trial a full Runge-Kutta step, whose end rate gives the
-  // slope), falling back to Illinois regula falsi. Returns false, with *length set to a shorter step
-  // to take instead, when a trial breaks the error tolerance.
-  bool locatePhaseEnd(double P, const State& y, const State& k1, double h, const Step& full, double* length,
-                      Step* landed) {
-    const double tolerance_g = kEventResidualFraction * options_.tolerance * phaseEventScale();
-    double lo = 0, g_lo = phaseEvent(P, y);
-    double hi = h, g_hi = phaseEvent(P + h, full.y);
+  // Finds the step length in [0, h] that lands on an event the full step crossed: Newton on the
+  // length where the event has a slope (each trial a full Runge-Kutta step, whose end rate gives the
+  // next slope), Illinois regula falsi otherwise. Returns false, with *length set to a shorter step to
+  // take instead, when a trial breaks the error tolerance.
+  bool locate(const Event& event, const State& z, const State& k1, double h, const Step& full, double* length,
+              Step* landed) {
+    const double tolerance_g = eventTolerance(event);
+    double lo = 0, g_lo = eventValue(event, z);
+    double hi = h, g_hi = eventValue(event, full.z);
     *length = h;
     *landed = full;
     if (g_lo <= tolerance_g) {  // due where the step starts
       *length = 0;
-      landed->y = y;
+      landed->z = z;
+      landed->rate_at_end = k1;
       return true;
     }
-    // Newton from the step start where the event function falls (at the start of restitution v_y,
-    // its slope, is zero: then the secant).
     auto newton = [](double from, double g, double slope) {
-      return slope < 0 ? from - g / slope : -1.0;  // -1: outside any bracket
+      return slope < 0 ? from - g / slope : -1.0;  // -1: outside any bracket, so not taken
     };
-    double trial = newton(0, g_lo, phaseEventSlope(k1));
+    // First guess: the root of the cubic through g and its slope at both ends of the full step (for
+    // events with a slope), else Newton from the start.
+    double trial = newton(0, g_lo, eventSlope(event, k1));
+    const double slope_lo = eventSlope(event, k1), slope_hi = eventSlope(event, full.rate_at_end);
+    if (event.phase_end && g_hi < 0) trial = h * hermiteRoot(g_lo, slope_lo * h, g_hi, slope_hi * h);
     int side = 0;
     for (int it = 0; it < kMaxEventIterations; ++it) {
       if (!(trial > lo && trial < hi) && g_lo > g_hi) trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
       if (!(trial > lo && trial < hi)) trial = 0.5 * (lo + hi);
-      const Step attempt = rungeKuttaStep(P, y, k1, trial);
+      const Step attempt = rungeKuttaStep(z, k1, trial);
       if (attempt.error > 1) {
         *length = trial * stepFactor(attempt.error);
         return false;
       }
-      const double g = phaseEvent(P + trial, attempt.y);
+      const double g = eventValue(event, attempt.z);
       if (g <= tolerance_g) {  // at or past the event: a candidate landing
         hi = trial;
         g_hi = g;
@@ -279,40 +564,86 @@ class ExactImpact {
         if (side == +1) g_hi *= 0.5;
         side = +1;
       }
-      if (hi - lo <= kEventBracketUlps * kEpsilon * (P + h)) break;
-      trial = newton(trial, g, phaseEventSlope(attempt.rate_at_end));  // replaced above if outside the bracket
+      if (hi - lo <= kEventBracketUlps * kEpsilon * h) break;
+      trial = newton(trial, g, eventSlope(event, attempt.rate_at_end));
     }
-    return landed->error <= 1;
+    if (landed->error <= 1) return true;
+    // Only the full step, which broke the tolerance, saw the event: it may lie beyond. Take the
+    // longest accurate stretch before it and look again from there.
+    *length = lo > 0 ? lo : h * stepFactor(full.error);
+    return false;
   }
 
-  // Whether friction could hold contact k at (P, y) without saturating.
-  bool canHold(int k, double P, const State& y) {
-    const ContactMode saved = contacts_[k].mode;
-    contacts_[k].mode = ContactMode::Stick;
-    const Friction f = friction(slip(0, P, y), slip(1, P, y));
-    contacts_[k].mode = saved;
-    if (k == 0) return f.a.norm() < mu_[0];
-    return f.b.norm() < mu_[1] * (s_ + c_ * f.a.y());
-  }
+  void setSlip(int k, const State& z, const Eigen::Vector2d& target) { slip0_[k] += target - slip(k, z); }
 
-  void setMode(int k, ContactMode mode, double P) {
+  void setMode(int k, ContactMode mode) {
+    if (++changes_ > kMaxContactChanges) throw std::logic_error("cushion contacts changed state too often");
     contacts_[k].mode = mode;
-    result_.contact_changes.push_back({P, k == 0 ? Contact::Cushion : Contact::Cloth, mode});
   }
 
-  // Holds a contact whose slip vanished. The slip left over (below the vanishing threshold) is
-  // removed, so that if it slips again it starts from zero rather than from noise; this shifts the
-  // slip by less than the threshold.
-  void hold(int k, double P, const State& y) {
-    const Eigen::Vector2d u = slip(k, P, y);
+  // Records the contacts' physical modes at z where they changed: a contact sticks while it is held
+  // and its cone holds it, and slips otherwise (a held contact sliding along phi* slips). Between
+  // located instants (the start, the phase ends) a change is recorded at the end of the step in which
+  // it happened.
+  void reportModes(const State& z) {
+    const Laws laws = lawsAt(slips(z), nullptr);
+    for (int k = 0; k < 2; ++k) {
+      if (contacts_[k].frictionless) continue;
+      const ContactMode mode = held(k) && laws.stick[k] ? ContactMode::Stick : ContactMode::Slip;
+      if (reported_[k] && *reported_[k] == mode) continue;
+      reported_[k] = mode;
+      result_.contact_changes.push_back({z[kP], k == 0 ? Contact::Cushion : Contact::Cloth, mode});
+    }
+  }
+
+  // Holds contact k, whose slip has vanished: the leftover (below the vanishing threshold) is removed,
+  // and the search for phi* gets a first guess over the whole circle.
+  // After an accepted step: counts how long each slipping contact's slip has stayed small.
+  void countSmallSlips(const State& z) {
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
+    for (int k = 0; k < 2; ++k) {
+      const bool small = slipping(k) && u[k].norm() <= kStagnantSlipMultiple * vanished_slip_;
+      contacts_[k].small_slip_steps = small ? contacts_[k].small_slip_steps + 1 : 0;
+    }
+  }
+
+  void hold(int k, const State& z) {
+    contacts_[k].small_slip_steps = 0;
+    const Eigen::Vector2d u = slip(k, z);
     if (u.norm() > 0) contacts_[k].direction = u.normalized();
-    slip0_[k] -= u;
-    setMode(k, ContactMode::Stick, P);
+    setSlip(k, z, Eigen::Vector2d::Zero());
+    setMode(k, ContactMode::Stick);
+    Laws laws = lawsAt(slips(z), nullptr);
+    laws.stick[k] = true;
+    contacts_[k].creep = creepDirectionSearch(k, laws);
   }
 
-  BallVelocity ballAt(double P, const State& y) const {
-    const BallVelocity change = impulseResponse(params_, P, Eigen::Vector2d(y[kAx], y[kAy]),
-                                                Eigen::Vector2d(y[kBx], y[kBy]));
+  // Whether slipping contact k slides steadily on the edge of its cone: its cone cannot hold it and
+  // its small slip already lies along phi* (to within what the held law may miss). Such a slip
+  // changes slowly while its direction is held stiffly in place; the held law describes it exactly
+  // and is integrated in P.
+  bool slidesSteadily(int k, const std::array<Eigen::Vector2d, 2>& u) {
+    Laws laws = lawsAt(u, nullptr);
+    laws.stick[k] = true;
+    if (coneMargin(k, frictionFor(laws)) >= kConeSlackRelative) return false;
+    Eigen::Vector2d phi;
+    if (!creepDirection(k, laws, u[k].normalized(), &phi)) return false;
+    if (std::abs(cross(u[k], phi)) >= 0.5 * creep_error_limit_) return false;
+    contacts_[k].creep = phi;
+    return true;
+  }
+
+  // After an accepted step: held contacts remember where phi* was (the next step's first guess).
+  void updateCreepGuesses(const State& z) {
+    const Laws laws = lawsAt(slips(z), nullptr);
+    for (int k = 0; k < 2; ++k) {
+      if (held(k) && !laws.stick[k]) contacts_[k].creep = laws.direction[k];
+    }
+  }
+
+  BallVelocity ballAt(const State& z) const {
+    const BallVelocity change = impulseResponse(params_, z[kP], Eigen::Vector2d(z[kAx], z[kAy]),
+                                                Eigen::Vector2d(z[kBx], z[kBy]));
     BallVelocity ball = incoming_;
     ball.v += change.v;
     ball.w += change.w;
@@ -320,142 +651,180 @@ class ExactImpact {
     return ball;
   }
 
-  void sample(double P, const State& y) {
+  void sample(const State& z) {
     ImpactSample s;
-    s.impulse_Ns = P;
-    s.ball = ballAt(P, y);
-    s.normal_work_J = y[kWork];
-    s.cushion_slip = slip(0, P, y);
-    s.cloth_slip = slip(1, P, y);
+    s.impulse_Ns = z[kP];
+    s.ball = ballAt(z);
+    s.normal_work_J = z[kWork];
+    s.cushion_slip = cushionSlip(params_, s.ball);
+    s.cloth_slip = clothSlip(params_, s.ball);
     result_.trace.push_back(s);
   }
 
-  // Trace samples inside an accepted step (cubic Hermite through its ends; for plots only).
-  void sampleInside(double P, const State& y0, const State& r0, double h, const State& y1, const State& r1) {
+  // Trace samples at every multiple of the spacing in P inside an accepted step (cubic Hermite through
+  // the step's ends, P monotone in tau; for plots only).
+  void sampleInside(const State& z0, const State& r0, double h, const State& z1, const State& r1) {
     const double spacing = options_.trace_spacing_Ns;
-    for (double next = (std::floor(P / spacing) + 1) * spacing; next < P + h; next += spacing) {
-      const double t = (next - P) / h;
+    auto at = [&](double t) {
       const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
       const double h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
-      sample(next, h00 * y0 + h10 * h * r0 + h01 * y1 + h11 * h * r1);
+      return State(h00 * z0 + h10 * h * r0 + h01 * z1 + h11 * h * r1);
+    };
+    for (double next = (std::floor(z0[kP] / spacing) + 1) * spacing; next < z1[kP]; next += spacing) {
+      double lo = 0, hi = 1;
+      for (int it = 0; it < 50; ++it) (at(0.5 * (lo + hi))[kP] < next ? lo : hi) = 0.5 * (lo + hi);
+      State z = at(0.5 * (lo + hi));
+      z[kP] = next;
+      sample(z);
     }
   }
 
   const CushionParams params_;
   const BallVelocity incoming_;
   const ExactSolverOptions options_;
-  double s_ = 0, c_ = 0, M_ = 0, vy0_ = 0, velocity_scale_ = 0;
-  double held_slip_ = 0;  // m/s: a slip this small has vanished (kHeldSlipFraction)
+  double s_ = 0, c_ = 0, M_ = 0, inverse_mass_ = 0, vy0_ = 0, velocity_scale_ = 0;
+  double impulse_scale_ = 0;      // N s, M V
+  double vanished_slip_ = 0;      // m/s, kVanishedSlipFraction
+  double regularizing_slip_ = 0;  // m/s, s0 of the change of variable; also where held contacts slip
+  double creep_error_limit_ = 0;  // m/s, kCreepErrorFraction
   std::array<double, 2> mu_;
-  std::array<Eigen::Vector2d, 2> slip0_;  // slips at P = 0, shifted by hold()
-  Eigen::Matrix4d delassus_;
+  std::array<Eigen::Vector2d, 2> slip0_;  // slips at P = 0, shifted by setSlip
+  // Entries of the contact matrix M G: [[7/2, 0, cx, 0], [0, s^2 + 5/2, 0, cy], [cx, 0, 7/2, 0],
+  // [0, cy, 0, 7/2]] with cx = 1 - 5s/2, cy = 5/2 - s.
+  double coupling_x_ = 0, coupling_y_ = 0, diagonal_y_ = 0;
   State error_scale_;
   std::array<ContactState, 2> contacts_;
   bool compressing_ = true;
   double work_target_ = 0;
   long evaluations_ = 0;
+  int changes_ = 0;
+  std::array<std::optional<ContactMode>, 2> reported_;  // the modes recorded last
   CushionImpactResult result_;
 };
 
 CushionImpactResult ExactImpact::run() {
   const bool tracing = options_.trace_spacing_Ns > 0;
-  double P = 0;
-  State y = State::Zero();
+  State z = State::Zero();
   for (int k = 0; k < 2; ++k) {
     if (contacts_[k].frictionless) continue;
-    const Eigen::Vector2d u = slip(k, P, y);
-    if (u.norm() <= held_slip_) {
-      hold(k, P, y);
+    const Eigen::Vector2d u = slip(k, z);
+    if (u.norm() <= vanished_slip_) {
+      hold(k, z);
     } else {
       contacts_[k].direction = u.normalized();
-      setMode(k, ContactMode::Slip, P);
+      setMode(k, ContactMode::Slip);
     }
   }
-  if (tracing) sample(P, y);
+  reportModes(z);
+  if (tracing) sample(z);
 
-  State k1 = rate(P, y);
+  State k1 = rate(z);
   double h = kFirstStepFraction * M_ * vy0_;
   for (int steps = 0;; ++steps) {
     if (steps == kMaxSteps) throw std::logic_error("exact cushion solver exceeded its step budget");
-    // Contact changes due here: a vanished slip is held, a held slip that has grown slips again.
+    // Contact changes due here. A slip that has decayed below the threshold has vanished: the
+    // contact is held. A held contact slips as its own slip says once that slip is large enough for
+    // it (the regularizing slip), or as soon as its cone could hold it while it still slips (its slip
+    // then shrinks, which the change of variable follows).
     bool changed = false;
-    double length = h;
-    int aimed = -1;  // the contact whose vanishing slip caps this step
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
     for (int k = 0; k < 2; ++k) {
-      if (contacts_[k].frictionless) continue;
-      const Eigen::Vector2d u = slip(k, P, y);
-      const double speed = u.norm();
-      if (contacts_[k].mode == ContactMode::Stick) {
-        if (speed > kReleaseSlipMultiple * held_slip_) {
-          contacts_[k].direction = u / speed;
-          setMode(k, ContactMode::Slip, P);
+      if (slipping(k) && (u[k].norm() <= vanished_slip_ || contacts_[k].small_slip_steps > kStagnantSlipSteps)) {
+        hold(k, z);
+        changed = true;
+      } else if (slipping(k) && u[k].norm() < kSteadyCreepFraction * regularizing_slip_ && slidesSteadily(k, u)) {
+        setMode(k, ContactMode::Stick);  // its slip stays as it is: it already lies along phi*
+        changed = true;
+      } else if (held(k) && u[k].norm() > kReleaseSlipMultiple * vanished_slip_) {
+        const Laws laws = lawsAt(u, nullptr);
+        // While it slides along phi* the true slip lags phi* by an angle that grows with the slip, and
+        // the friction along phi* misses that lag: the error shows as the slip's own misalignment
+        // with phi*, which bounds how long the held law may run.
+        const double misalignment = laws.stick[k] ? 0 : std::abs(cross(u[k], laws.direction[k]));
+        if (u[k].norm() >= regularizing_slip_ || laws.stick[k] || misalignment >= creep_error_limit_) {
+          contacts_[k].direction = u[k].normalized();
+          setMode(k, ContactMode::Slip);
           changed = true;
         }
-        continue;
-      }
-      const bool chattering = speed <= kChatterSlipMultiple * held_slip_ &&
-                              speed > contacts_[k].previous_slip.norm() && canHold(k, P, y);
-      if (speed <= held_slip_ || chattering) {
-        hold(k, P, y);
-        changed = true;
-        continue;
-      }
-      const double shrink_rate = -slipRate(k, k1).dot(u) / speed;  // -d|u|/dP
-      if (shrink_rate > 0 && (1 - contacts_[k].aim_short) * speed < length * shrink_rate) {
-        length = (1 - contacts_[k].aim_short) * speed / shrink_rate;
-        aimed = k;
       }
     }
     if (changed) {
-      k1 = rate(P, y);
+      k1 = rate(z);
       continue;
     }
-    const Step step = rungeKuttaStep(P, y, k1, length);
-    if (phaseEvent(P + length, step.y) > 0) {
-      if (step.error > 1) {
-        if (aimed >= 0 && contacts_[aimed].aim_short < kAimShortMax) {
-          // The slip turns as it vanishes: stop further short of the predicted zero.
-          contacts_[aimed].aim_short = std::min(kAimShortMax, contacts_[aimed].aim_short * kAimShortGrowth);
-        } else {
-          h = length * stepFactor(step.error);
-        }
+    std::vector<Event> events = {Event{}};
+    for (int k = 0; k < 2; ++k) {
+      if (!held(k)) continue;
+      // Armed only clear of the cone's edge, so that an event just applied cannot fire again at once.
+      const double margin = neededMargin(k, z);
+      const Event candidate{false, k, margin < 0 ? -1.0 : 1.0};
+      if (std::abs(margin) > eventTolerance(candidate)) events.push_back(candidate);
+    }
+    const Step step = rungeKuttaStep(z, k1, h);
+    // Events are judged before the error, which may be large only because of what lies beyond them.
+    int first = -1;
+    double first_estimate = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < static_cast<int>(events.size()); ++i) {
+      const double g0 = eventValue(events[i], z), g1 = eventValue(events[i], step.z);
+      if (g1 > 0) continue;
+      const double estimate = g0 > 0 ? g0 / (g0 - g1) : 0;
+      if (estimate < first_estimate) {
+        first_estimate = estimate;
+        first = i;
+      }
+    }
+    if (first < 0) {
+      if (step.error <= 1) {
+        if (tracing) sampleInside(z, k1, h, step.z, step.rate_at_end);
+        z = step.z;
+        k1 = step.rate_at_end;
+        updateCreepGuesses(z);
+        countSmallSlips(z);
+        reportModes(z);
+        if (tracing) sample(z);
+      }
+      h *= stepFactor(step.error);
+      continue;
+    }
+    Step landed;
+    double length = 0;
+    if (!locate(events[first], z, k1, h, step, &length, &landed)) {
+      h = length;
+      continue;
+    }
+    if (tracing && length > 0) sampleInside(z, k1, length, landed.z, landed.rate_at_end);
+    z = landed.z;
+    updateCreepGuesses(z);
+    bool phase_ends = false;
+    for (int i = 0; i < static_cast<int>(events.size()); ++i) {
+      if (i != first && eventValue(events[i], z) > eventTolerance(events[i])) continue;
+      if (events[i].phase_end) {
+        phase_ends = true;
         continue;
       }
-      if (aimed >= 0) {
-        contacts_[aimed].aim_short = std::max(kAimShortMin, contacts_[aimed].aim_short / kAimShortGrowth);
-      } else {
-        h = length * stepFactor(step.error);
+      if (events[i].sign > 0) continue;  // it slides along phi* from here (reportModes records it)
+      // The cone holds the contact again. With a slip left it slides (and its slip shrinks); with
+      // none to speak of it sticks.
+      const int k = events[i].contact;
+      const Eigen::Vector2d u = slip(k, z);
+      if (u.norm() > kReleaseSlipMultiple * vanished_slip_) {
+        contacts_[k].direction = u.normalized();
+        setMode(k, ContactMode::Slip);
       }
-      for (int k = 0; k < 2; ++k) contacts_[k].previous_slip = slip(k, P, y);
-      if (tracing) sampleInside(P, y, k1, length, step.y, step.rate_at_end);
-      P += length;
-      y = step.y;
-      k1 = step.rate_at_end;
-      if (tracing) sample(P, y);
-      continue;
     }
-    // The step crosses the end of the phase (judged before the error, which may be large only
-    // because of what lies beyond it).
-    Step landed;
-    double landed_length = 0;
-    if (!locatePhaseEnd(P, y, k1, length, step, &landed_length, &landed)) {
-      h = landed_length;
-      continue;
-    }
-    if (tracing && landed_length > 0) sampleInside(P, y, k1, landed_length, landed.y, landed.rate_at_end);
-    P += landed_length;
-    y = landed.y;
-    if (tracing) sample(P, y);
+    reportModes(z);
+    if (tracing && length > 0) sample(z);
+    k1 = rate(z);
+    if (!phase_ends) continue;
     if (!compressing_) {
-      result_.final_impulse_Ns = P;
-      result_.after = ballAt(P, y);
+      result_.final_impulse_Ns = z[kP];
+      result_.after = ballAt(z);
       break;
     }
     compressing_ = false;
-    result_.compression_impulse_Ns = P;
-    result_.compression_work_J = y[kWork];
-    work_target_ = (1 - params_.restitution * params_.restitution) * y[kWork];  // eq. 17b
-    k1 = landed.rate_at_end;
+    result_.compression_impulse_Ns = z[kP];
+    result_.compression_work_J = z[kWork];
+    work_target_ = (1 - params_.restitution * params_.restitution) * z[kWork];  // eq. 17b
   }
   result_.rhs_evaluations = evaluations_;
   return std::move(result_);
@@ -467,13 +836,12 @@ CushionImpactResult solveCushionImpactExact(const CushionParams& params, const B
                                             const ExactSolverOptions& options) {
   validateCushionParams(params);
   validateIncomingBall(incoming);
-  if (!(options.tolerance >= 1e-15 && options.tolerance <= 1e-2)) {
-    throw std::invalid_argument("exact solver tolerance = " + std::to_string(options.tolerance) +
-                                " is not allowed: it must lie in [1e-15, 1e-2]");
+  if (!(options.tolerance >= kMinTolerance && options.tolerance <= kMaxTolerance)) {
+    rejectValue("exact solver tolerance", options.tolerance,
+                "it must lie in [" + valueText(kMinTolerance) + ", " + valueText(kMaxTolerance) + "]");
   }
   if (!(options.trace_spacing_Ns >= 0) || !std::isfinite(options.trace_spacing_Ns)) {
-    throw std::invalid_argument("trace spacing = " + std::to_string(options.trace_spacing_Ns) +
-                                " N s is not allowed: it must be a finite number >= 0");
+    rejectValue("trace spacing (N s)", options.trace_spacing_Ns, "it must be a finite number >= 0");
   }
   return ExactImpact(params, incoming, options).run();
 }

@@ -1,21 +1,17 @@
 #include "physics/cushion_model.h"
 
+#include "physics/value_text.h"
+
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace baize::physics {
 namespace {
 
-std::string show(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
-}
+std::string show(double value) { return valueText(value); }
 
 [[noreturn]] void reject(const std::string& what, double value, const std::string& allowed) {
-  throw std::invalid_argument(what + " = " + show(value) + " is not allowed: " + allowed);
+  rejectValue(what, value, allowed);
 }
 
 void requireFinite(const std::string& what, double value) {

@@ -1,18 +1,13 @@
 #include "physics/cushion_paper_solver.h"
 
+#include "physics/value_text.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace baize::physics {
 namespace {
-
-// Unit vector along a slip velocity; zero when there is no slip, which switches that contact's
-// friction off for the increment, as the paper does (section 3.2).
-Eigen::Vector2d slipDirection(const Eigen::Vector2d& slip) {
-  const double speed = slip.norm();
-  return speed > 0 ? Eigen::Vector2d(slip / speed) : Eigen::Vector2d::Zero();
-}
 
 ImpactSample sampleOf(const CushionParams& params, double P, const BallVelocity& ball, double work) {
   return {P, ball, work, cushionSlip(params, ball), clothSlip(params, ball)};
@@ -25,8 +20,7 @@ CushionImpactResult solveCushionImpactPaper(const CushionParams& params, const B
   validateCushionParams(params);
   validateIncomingBall(incoming);
   if (options.steps < 1) {
-    throw std::invalid_argument("paper solver steps = " + std::to_string(options.steps) +
-                                " is not allowed: it must be >= 1");
+    rejectValue("paper solver steps", options.steps, "it must be >= 1");
   }
   const double s = contactSinTheta(params);
   const double c = std::sqrt(1 - s * s);
@@ -44,20 +38,37 @@ CushionImpactResult solveCushionImpactPaper(const CushionParams& params, const B
   double P = 0, work = 0, work_target = 0;
   bool compressing = true;
   if (options.record_trace) result.trace.push_back(sampleOf(params, P, ball, work));
+  // The increment's constant factors, hoisted out of the loop (eq. 14a and its partners with the
+  // friction directions frozen over the increment; see impulseResponse).
+  const double R = params.radius_m;
+  const double linear = dP / params.mass_kg;                 // dv per unit friction coefficient
+  const double angular = 5 * dP / (2 * params.mass_kg * R);  // dw per unit friction coefficient
+  auto unit = [](double x, double y, double* ux, double* uy) {  // zero when there is no slip
+    const double size = std::sqrt(x * x + y * y);
+    *ux = size > 0 ? x / size : 0;
+    *uy = size > 0 ? y / size : 0;
+  };
   for (long n = 0;; ++n) {
     if (n == max_increments) throw std::logic_error("paper cushion solver did not terminate");
-    const Eigen::Vector2d a = mu_w * slipDirection(cushionSlip(params, ball));
-    const double table_rate = s + c * a.y();  // dP_C/dP, eq. 8
-    const Eigen::Vector2d b = mu_s * table_rate * slipDirection(clothSlip(params, ball));
-    const BallVelocity change = impulseResponse(params, dP, a * dP, b * dP);
-    const double vy_before = ball.v.y();
-    ball.v += change.v;
-    ball.w += change.w;
+    Eigen::Vector3d& v = ball.v;
+    Eigen::Vector3d& w = ball.w;
+    double ix, iy, cx, cy;
+    unit(v.x() + R * (w.y() * s - w.z() * c), -v.y() * s + R * w.x(), &ix, &iy);  // eq. 12a, 12b
+    unit(v.x() - R * w.y(), v.y() + R * w.x(), &cx, &cy);                          // eq. 13a, 13b
+    const double ax = mu_w * ix, ay = mu_w * iy;
+    const double table_rate = s + c * ay;  // dP_C/dP, eq. 8
+    const double bx = mu_s * table_rate * cx, by = mu_s * table_rate * cy;
+    const double vy_before = v.y();
+    v.x() -= linear * (ax + bx);
+    v.y() -= linear * (c - s * ay + by);
+    w.x() -= angular * (ay + by);
+    w.y() -= angular * (s * ax - bx);
+    w.z() += angular * c * ax;
     P += dP;
-    work += dP * c * (vy_before + ball.v.y()) / 2;  // eq. 17a
+    work += dP * c * (vy_before + v.y()) / 2;  // eq. 17a
     ++result.rhs_evaluations;
     if (options.record_trace) result.trace.push_back(sampleOf(params, P, ball, work));
-    if (compressing && ball.v.y() <= 0) {  // eq. 17c, met at the first increment that crosses
+    if (compressing && v.y() <= 0) {  // eq. 17c, met at the first increment that crosses
       compressing = false;
       result.compression_impulse_Ns = P;
       result.compression_work_J = work;

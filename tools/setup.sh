@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  python3                # the command-line tests read JSON and CSV with it
   libeigen3-dev          # small fixed-size linear algebra in the physics
   nlohmann-json3-dev     # scene, result and output JSON
   libcli11-dev           # the baize command line

@@ -61,14 +61,22 @@ CushionImpactResult solveExact(const CushionParams& params, const BallVelocity& 
 double sinTheta(const CushionParams& p) { return contactSinTheta(p); }
 double cosTheta(const CushionParams& p) { return std::sqrt(1 - sinTheta(p) * sinTheta(p)); }
 
+// Parameters with a grippy cloth, so that the cloth contact sticks in some impacts too.
+CushionParams grippyParams(RandomImpacts& random) {
+  for (;;) {
+    CushionParams p = random.randomParams();
+    p.cloth_friction = random.uniform(0.4, 0.9);
+    const double s = sinTheta(p), c = cosTheta(p), mu_w = p.cushion_friction;
+    if (c - mu_w * s - p.cloth_friction * (s + mu_w * c) > 0.05) return p;  // validation's bound
+  }
+}
+
 // --- 1. frictionless limit -----------------------------------------------------------------------
 
 // Without friction only v_y changes, at the constant rate -c/M (c = cos theta). Compression ends at
 // P_c = M v_y0 / c with W_c = int c v_y dP = M v_y0^2 / 2; restitution ends when the work released,
 // M v_y'^2 / 2, is e^2 W_c: v_y' = -e v_y0 at P_f = (1 + e) M v_y0 / c. Everything else is unchanged.
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_FrictionlessLimitIsExact) {
+TEST(CushionExactSolver, FrictionlessLimitIsExact) {
   RandomImpacts random(kSeed);
   for (int i = 0; i < 200; ++i) {
     test::RandomImpact impact = random.next(true);
@@ -135,9 +143,7 @@ TEST(CushionExactSolver, FrictionlessEnergyLossIsTheRestitutionLoss) {
 // The reflection x -> -x maps solutions to solutions: v -> (-vx, vy, vz) (a vector) and
 // w -> (wx, -wy, -wz) (a pseudovector). For the incoming ball that is alpha -> pi - alpha with the
 // sidespin reversed (same topspin). The mirrored input must give the mirrored output.
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_MirroredIncomingBallGivesTheMirroredOutcome) {
+TEST(CushionExactSolver, MirroredIncomingBallGivesTheMirroredOutcome) {
   RandomImpacts random(kSeed + 3);
   for (int i = 0; i < 300; ++i) {
     const test::RandomImpact impact = random.next(true);
@@ -195,9 +201,7 @@ TEST(CushionExactSolver, ScalingSpeedAndSpinsScalesTheOutcome) {
 
 // --- 6. accuracy ---------------------------------------------------------------------------------
 
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_DefaultToleranceIsWithinOneBillionthOfTheConvergedSolution) {
+TEST(CushionExactSolver, DefaultToleranceIsWithinOneBillionthOfTheConvergedSolution) {
   RandomImpacts random(kSeed + 5);
   for (int i = 0; i < 200; ++i) {
     const test::RandomImpact impact = random.next(true);
@@ -279,24 +283,41 @@ TEST(CushionExactSolver, ConvergedSolutionAgreesWithTheExtrapolatedPaperSchemeOn
   }
 }
 
-// On random impacts slips also stick or reverse, and the increment in which that happens leaves a
-// first-order error that depends on where inside it the slip vanishes. Averaging the extrapolation
-// over kPhaseSamples consecutive N samples that phase; what is left was measured at up to 6e-6 V0
-// (an impact with cushion stick), 2e-7 V0 or less elsewhere.
+// On random impacts a slip may also vanish (and stick, or turn sharply through almost zero). Near
+// such a point the Euler scheme's frozen slip direction is badly wrong for the increment in which
+// the direction flips, a first-order error that depends on where inside the increment it happens,
+// so extrapolation does not cancel it; averaging over kPhaseSamples consecutive N samples that
+// phase. Impacts whose slips both stay above kSmoothSlipFloor keep the smooth-case agreement.
+// Measured over these impacts: below 9e-10 V0 for the smooth ones, up to 3e-6 V0 for the others.
+constexpr double kSmoothSlipFloor = 1e-2;  // relative to V0; the smallest in the smooth set is 8e-2
 constexpr int kPhaseSamples = 4;
-constexpr double kRichardsonGeneralAgreement = 2e-5;  // relative to V0
+constexpr double kRichardsonGeneralAgreement = 2e-5;  // relative to V0: about 0.3 V0 / N
 
 TEST(CushionExactSolver, ConvergedSolutionAgreesWithTheExtrapolatedPaperSchemeOnRandomImpacts) {
   RandomImpacts random(kSeed + 7);
-  for (int i = 0; i < 8; ++i) {
-    const test::RandomImpact impact = random.next(/*random_params=*/i % 2 == 1);
+  int smooth = 0, vanishing = 0;
+  for (int i = 0; i < 24; ++i) {
+    test::RandomImpact impact = random.next(/*random_params=*/i % 3 == 1);
+    if (i % 3 == 2) impact.params = grippyParams(random);
     const CushionParams& p = impact.params;
-    const BallVelocity converged = solveExact(p, impact.incoming, kConvergedTolerance).after;
-    EXPECT_LT(velocityDifference(richardson(p, impact.incoming, kRichardsonSteps, kPhaseSamples),
-                                 converged, p.radius_m),
-              kRichardsonGeneralAgreement * impact.speed_mps)
-        << "impact " << i;
+    const double V0 = impact.speed_mps;
+    const CushionImpactResult converged = solveExact(p, impact.incoming, kConvergedTolerance,
+                                                     p.mass_kg * impact.incoming.v.y() / 1000);
+    double smallest_slip = std::numeric_limits<double>::infinity();
+    for (const ImpactSample& sample : converged.trace) {
+      smallest_slip = std::min({smallest_slip, sample.cushion_slip.norm(), sample.cloth_slip.norm()});
+    }
+    const bool is_smooth = smallest_slip > kSmoothSlipFloor * V0;
+    (is_smooth ? smooth : vanishing) += 1;
+    const BallVelocity extrapolated =
+        richardson(p, impact.incoming, kRichardsonSteps, is_smooth ? 1 : kPhaseSamples);
+    EXPECT_LT(velocityDifference(extrapolated, converged.after, p.radius_m),
+              (is_smooth ? kRichardsonSmoothAgreement : kRichardsonGeneralAgreement) * V0)
+        << "impact " << i << (is_smooth ? " (smooth)" : " (a slip vanishes)");
   }
+  // Both kinds must occur, or one of the two checks above was never made.
+  EXPECT_GT(smooth, 0);
+  EXPECT_GT(vanishing, 0);
 }
 
 // --- 11. trace, events and the Coulomb law ----------------------------------------------------------
@@ -357,19 +378,24 @@ TEST(CushionExactSolver, SlippingContactsStartInSlipMode) {
 // Head-on with natural roll the cloth slip is zero at P = 0. Holding it there needs a cloth friction
 // rate b_y = -(c + (5/2 - s) a_y) / (7/2) (from d(v_y + R w_x)/dP = 0 with impulseResponse), with
 // a_y = -mu_w (the cushion slip is -(1 + s) V0 along Y'); it sticks if |b_y| <= mu_s q, where
-// q = s - mu_w c is the table's normal impulse rate. Snooker values: |b_y| = 0.178 against
-// mu_s q = 0.058, so it slips at once; a grippy cloth (mu_s = 0.8) holds it: 0.178 <= 0.217.
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_InitialClothModeForARollingHeadOnBallFollowsTheFrictionCone) {
-  for (double mu_s : {0.212, 0.8}) {
+// q = s - mu_w c is the table's normal impulse rate. Snooker values: |b_y| = 0.1779 and
+// q = 0.2717, so the cloth holds for mu_s >= 0.655: it slips at once on snooker cloth (0.212) and
+// at 0.55, and sticks at 0.7 and 0.8 (both sides of the cone's edge).
+TEST(CushionExactSolver, InitialClothModeForARollingHeadOnBallFollowsTheFrictionCone) {
+  const struct {
+    double mu_s;
+    ContactMode expected;
+  } cases[] = {{0.212, ContactMode::Slip}, {0.55, ContactMode::Slip}, {0.7, ContactMode::Stick},
+               {0.8, ContactMode::Stick}};
+  for (const auto& example : cases) {
     CushionParams p;
-    p.cloth_friction = mu_s;
+    p.cloth_friction = example.mu_s;
     const double s = sinTheta(p), c = cosTheta(p), mu_w = p.cushion_friction;
     const double needed = (c - (2.5 - s) * mu_w) / 3.5;
-    const double available = mu_s * (s - mu_w * c);
+    const double available = example.mu_s * (s - mu_w * c);
     const ContactMode expected = needed <= available ? ContactMode::Stick : ContactMode::Slip;
-    EXPECT_EQ(expected, mu_s > 0.5 ? ContactMode::Stick : ContactMode::Slip) << "the derivation";
+    ASSERT_EQ(expected, example.expected) << "the derivation, mu_s " << example.mu_s;
+    const double mu_s = example.mu_s;
     const BallVelocity in = incomingBall(1.0, degrees(90), 1.0 / p.radius_m, 0);
     const CushionImpactResult result = solveExact(p, in);
     ASSERT_GE(result.contact_changes.size(), 2u);
@@ -409,16 +435,6 @@ RecoveredFriction recoverFriction(const CushionParams& p, const BallVelocity& be
   return out;
 }
 
-// Parameters with a grippy cloth, so that the cloth contact sticks in some impacts too.
-CushionParams grippyParams(RandomImpacts& random) {
-  for (;;) {
-    CushionParams p = random.randomParams();
-    p.cloth_friction = random.uniform(0.4, 0.9);
-    const double s = sinTheta(p), c = cosTheta(p), mu_w = p.cushion_friction;
-    if (c - mu_w * s - p.cloth_friction * (s + mu_w * c) > 0.05) return p;  // validation's bound
-  }
-}
-
 // Friction read back from consecutive trace samples (between steps and events) must obey Coulomb:
 // a slipping contact gets friction of the full magnitude (mu_w at I, mu_s q at C, q = s + c a_y)
 // against its slip; a stuck contact keeps its slip at zero with friction inside the cone.
@@ -432,12 +448,10 @@ constexpr double kStuckSlipRelative = 1e-8;
 // Directions of slips smaller than this fraction of V0 are not checked (they turn fast).
 constexpr double kDirectionFloorRelative = 1e-4;
 
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_TraceObeysCoulombWhileSlippingAndTheConeWhileStuck) {
+TEST(CushionExactSolver, TraceObeysCoulombWhileSlippingAndTheConeWhileStuck) {
   RandomImpacts random(kSeed + 9);
   int stuck_intervals[2] = {0, 0};
-  for (int i = 0; i < 120; ++i) {
+  for (int i = 0; i < 400; ++i) {
     test::RandomImpact impact = random.next(true);
     if (i % 2 == 1) impact.params = grippyParams(random);
     const CushionParams& p = impact.params;
@@ -471,7 +485,13 @@ TEST(CushionExactSolver, DISABLED_TraceObeysCoulombWhileSlippingAndTheConeWhileS
             << "friction inside the cone, contact " << k;
         if (modeAt(result.contact_changes, contacts[k], from.impulse_Ns) == ContactMode::Stick) {
           EXPECT_LT(slip_from[k].norm(), kStuckSlipRelative * V0) << "stuck, contact " << k;
-          EXPECT_LT(slip_to[k].norm(), kStuckSlipRelative * V0) << "stuck, contact " << k;
+          // Past a stick break the slip grows from zero, so slip at the sample where the change is
+          // recorded means the break was located late.
+          const bool breaks_here = modeAt(result.contact_changes, contacts[k], to.impulse_Ns) == ContactMode::Slip;
+          EXPECT_LT(slip_to[k].norm(), kStuckSlipRelative * V0)
+              << (breaks_here ? "slip at the recorded stick break: located late, contact "
+                              : "stuck, contact ")
+              << k;
           ++stuck_intervals[k];
         } else if (slip_from[k].norm() > kDirectionFloorRelative * V0 &&
                    slip_to[k].norm() > kDirectionFloorRelative * V0) {
@@ -497,9 +517,7 @@ constexpr int kTraceSamplesPerImpact = 2000;
 // Trapezoid over 2000 intervals and cubic interpolation of the plotted samples: relative to W_c.
 constexpr double kTraceIntegralRelative = 1e-5;
 
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_TraceRecordsCompressionEndAndTheRestitutionWorkRelation) {
+TEST(CushionExactSolver, TraceRecordsCompressionEndAndTheRestitutionWorkRelation) {
   RandomImpacts random(kSeed + 10);
   for (int i = 0; i < 30; ++i) {
     const test::RandomImpact impact = random.next(true);
@@ -589,7 +607,7 @@ TEST(CushionExactSolver, SameInputGivesBitIdenticalOutput) {
       EXPECT_EQ(first.trace[n].normal_work_J, second.trace[n].normal_work_J);
     }
     // Recording a trace does not change the outcome.
-    expectIdentical(solveExact(impact.params, impact.incoming).after, first.after);
+    expectIdentical(solveExact(impact.params, impact.incoming, 1e-11).after, first.after);
   }
 }
 
@@ -608,9 +626,7 @@ BallVelocity rollingBall(const CushionParams& p, double alpha_deg, double sidesp
 // returns faster than without side, and it can return faster than it came (spin energy turns into
 // speed). Without side the cushion only takes speed away. (Reverse english is not ordered the same
 // way: near head-on it sends the ball back with a large -x velocity, which is speed too.)
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_RunningEnglishCanMakeTheReboundFasterThanTheApproach) {
+TEST(CushionExactSolver, RunningEnglishCanMakeTheReboundFasterThanTheApproach) {
   const CushionParams p;
   double fastest = 0;
   for (double alpha_deg = 10; alpha_deg <= 80; alpha_deg += 10) {
@@ -702,9 +718,7 @@ TEST(CushionExactSolver, HeadOnRollingReboundRatioIsAboutPointNineOneAtEverySpee
 constexpr double kDataPointTolerance_mps = 0.06;
 constexpr double kDataRmsTolerance_mps = 0.03;
 
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_HeadOnRollingReboundMatchesMeasuredSnookerData) {
+TEST(CushionExactSolver, HeadOnRollingReboundMatchesMeasuredSnookerData) {
   const CushionParams p;
   const double measured[][2] = {{0.27, 0.23}, {0.40, 0.35}, {0.50, 0.46}, {0.66, 0.59},
                                 {0.85, 0.78}, {1.17, 1.09}, {1.30, 1.24}};
@@ -728,9 +742,7 @@ void expectRejected(const std::function<void()>& call, const std::vector<std::st
   }
 }
 
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionExactSolver, DISABLED_RejectsToleranceOutsideItsRangeAndBadTraceSpacing) {
+TEST(CushionExactSolver, RejectsToleranceOutsideItsRangeAndBadTraceSpacing) {
   const CushionParams p;
   const BallVelocity in = incomingBall(1.0, degrees(60), 0, 0);
   auto withTolerance = [&](double tolerance) {

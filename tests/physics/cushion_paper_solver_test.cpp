@@ -274,9 +274,7 @@ struct ConvergenceCase {
   double speed_mps, alpha_deg, topspin_per_roll, sidespin_per_roll;  // spins in units of V0 / R
 };
 
-// DISABLED: the exact solver does not meet this requirement yet (issue #2 is open; its closing
-// note lists what fails and why). Re-enable when the solver is fixed; do not weaken the check.
-TEST(CushionPaperSolver, DISABLED_ConvergesToTheExactSolverAtFirstOrder) {
+TEST(CushionPaperSolver, ConvergesToTheExactSolverAtFirstOrder) {
   const CushionParams p;  // the paper's snooker values
   const ConvergenceCase cases[] = {{"rolling head-on", 1.0, 90, 1.0, 0.0},
                                    {"oblique with top and side spin", 1.3, 35, 0.5, -1.2},

@@ -173,7 +173,8 @@ done
 json_of fig10 --solver exact --speed 2 --angle 45 --sidespin 2 --topspin 1.5
 json_of fig8_point --solver exact --speed 1 --angle 135 --sidespin -2
 check_python '
-fig6, fig7, fig8, fig10 = (rows(sys.argv[1] + "/" + name + ".csv") for name in ("fig6", "fig7", "fig8", "fig10"))
+fig6, fig7, fig8, fig10 = (rows(sys.argv[1] + "/" + name + ".csv")
+                           for name in ("fig6", "fig7", "fig8", "fig10"))
 single10, single8 = load(sys.argv[2]), load(sys.argv[3])
 angles = [float(a) for a in range(1, 180)]
 def curves(table, key):
@@ -191,11 +192,14 @@ for table, key, values in ((fig6, "speed_mps", [0.5, 1, 1.5, 2, 2.5]),
 # Fig. 6: rolling, no side: the rebound angle and the speed ratio do not depend on V0.
 c6 = curves(fig6, "speed_mps")
 for r_slow, r_fast in zip(c6[0.5], c6[2.5]):
-    close(float(r_slow["rebound_angle_deg"]), float(r_fast["rebound_angle_deg"]), 1e-6, "fig6 angle")
+    close(float(r_slow["rebound_angle_deg"]), float(r_fast["rebound_angle_deg"]), 1e-6,
+          "fig6 angle")
     close(float(r_slow["speed_ratio"]), float(r_fast["speed_ratio"]), 1e-8, "fig6 ratio")
-    close(float(r_fast["rebound_speed_mps"]), 2.5 * float(r_fast["speed_ratio"]), 1e-12, "fig6 speed")
+    close(float(r_fast["rebound_speed_mps"]), 2.5 * float(r_fast["speed_ratio"]), 1e-12,
+          "fig6 speed")
 # The same shot (V0 = 1, rolling, no side) appears in all three families with the same values.
-same = [curves(fig6, "speed_mps")[1.0], curves(fig7, "topspin_k")[1.0], curves(fig8, "sidespin_k")[0.0]]
+same = [curves(fig6, "speed_mps")[1.0], curves(fig7, "topspin_k")[1.0],
+        curves(fig8, "sidespin_k")[0.0]]
 assert same[0] == same[1] == same[2], "the shared rolling curve differs between fig6, fig7, fig8"
 # Fig. 8 at alpha = 135, k = -2 is the single run with those flags.
 point = [r for r in curves(fig8, "sidespin_k")[-2.0] if float(r["alpha_deg"]) == 135][0]

@@ -16,9 +16,9 @@
 namespace baize::tools {
 namespace {
 
-constexpr int kDefaultPasses = 3;  // timed passes over the set; each impact keeps its best time
-constexpr double kSpeedTarget = 20;        // exact default at least 20x faster than paper N=5000
-constexpr double kAccuracyTarget = 1000;   // and at least 1000x more accurate
+constexpr int kDefaultPasses = 3;    // timed passes over the set; each impact keeps its best time
+constexpr double kSpeedTarget = 20;  // exact default at least 20x faster than paper N=5000
+constexpr double kAccuracyTarget = 1000;  // and at least 1000x more accurate
 
 struct BenchFlags {
   std::string csv_path;
@@ -59,13 +59,14 @@ void runBench(const BenchFlags& flags) {
             << " timed passes per impact\n";
   const std::string header = "solver,setting,median_ns,max_error";
   bool header_printed = false;
-  const BenchReport report = runCushionBench(params, flags.impacts, flags.passes, [&](const BenchRow& row) {
-    if (!header_printed) {
-      std::cout << header << '\n';
-      header_printed = true;
-    }
-    std::cout << csvRow(row) << std::endl;  // flushed: the bench takes a while
-  });
+  const BenchReport report =
+      runCushionBench(params, flags.impacts, flags.passes, [&](const BenchRow& row) {
+        if (!header_printed) {
+          std::cout << header << '\n';
+          header_printed = true;
+        }
+        std::cout << csvRow(row) << std::endl;  // flushed: the bench takes a while
+      });
   std::cout << "reference: exact solver at tolerance " << kReferenceTolerance
             << "; it differs from the solution at tolerance " << kReferenceCheckTolerance
             << " by at most " << std::setprecision(3) << report.reference_check_error
@@ -91,8 +92,9 @@ void runBench(const BenchFlags& flags) {
 void addBenchCushionCommand(CLI::App& bench) {
   auto flags = std::make_shared<BenchFlags>();
   CLI::App* command = bench.add_subcommand(
-      "cushion", "Time the paper and exact cushion solvers and measure their error against a "
-                 "converged reference, over one fixed seeded set of impacts");
+      "cushion",
+      "Time the paper and exact cushion solvers and measure their error against a "
+      "converged reference, over one fixed seeded set of impacts");
   command->add_option("--csv", flags->csv_path, "also write the table to this CSV file");
   command->add_option("--impacts", flags->impacts, "impacts in the set (a smoke run can use few)")
       ->capture_default_str();

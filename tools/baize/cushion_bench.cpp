@@ -58,7 +58,8 @@ BenchRow measure(const physics::CushionParams& params, const std::vector<BenchIm
   // A first, untimed-for-the-table run gives the output to score and the batch size.
   for (std::size_t i = 0; i < impacts.size(); ++i) {
     const Clock::time_point start = Clock::now();
-    const physics::CushionImpactResult result = solveCushionShot(params, impacts[i].incoming, setting);
+    const physics::CushionImpactResult result =
+        solveCushionShot(params, impacts[i].incoming, setting);
     const double once_ns = std::max(1.0, elapsedNs(start, Clock::now()));
     row.max_error = std::max(row.max_error, impactError(result.after, impacts[i].reference,
                                                         params.radius_m, impacts[i].speed_mps));
@@ -124,8 +125,9 @@ BenchReport runCushionBench(const physics::CushionParams& params, int count, int
     const physics::BallVelocity reference =
         solveCushionShot(params, incoming, reference_setting).after;
     const physics::BallVelocity check = solveCushionShot(params, incoming, check_setting).after;
-    report.reference_check_error = std::max(
-        report.reference_check_error, impactError(check, reference, params.radius_m, shot.speed_mps));
+    report.reference_check_error =
+        std::max(report.reference_check_error,
+                 impactError(check, reference, params.radius_m, shot.speed_mps));
     impacts.push_back({shot.speed_mps, incoming, reference});
   }
   for (const SolverSetting& setting : benchSettings()) {

@@ -17,7 +17,7 @@ namespace baize::tools {
 
 constexpr std::uint64_t kBenchSeed = 20100521;  // fixed: every run measures the same impacts
 constexpr int kDefaultBenchImpacts = 1000;
-constexpr double kReferenceTolerance = 1e-14;   // the exact solver's, for the reference outputs
+constexpr double kReferenceTolerance = 1e-14;       // the exact solver's, for the reference outputs
 constexpr double kReferenceCheckTolerance = 1e-13;  // a second reference 10x looser, to check it
 
 // The set: V0 uniform in [0.1, 2.5] m/s, alpha in [1, 179] deg, topspin k in [-2, 3] and

@@ -25,6 +25,7 @@ struct CushionFlags {
   CLI::Option* contact_height_flag = nullptr;  // unset: h = 7R/5 of the radius in use
   bool json = false;
   std::string sweep_directory;
+  CLI::Option* sweep_flag = nullptr;
 };
 
 // The checks that belong to the flags themselves. The parameters' ranges are the physics' to
@@ -81,19 +82,20 @@ void printHuman(const CushionFlags& flags, const physics::BallVelocity& incoming
   out << "Ball-cushion impact, " << solverName(flags.setting.kind) << " solver ("
       << settingLabel(flags.setting) << ")\n";
   out << "  ball:      M = " << p.mass_kg << " kg, R = " << p.radius_m << " m\n";
-  out << "  cushion:   h = " << p.contact_height_m << " m (sin theta = "
-      << physics::contactSinTheta(p) << "), e_e = " << p.restitution
+  out << "  cushion:   h = " << p.contact_height_m
+      << " m (sin theta = " << physics::contactSinTheta(p) << "), e_e = " << p.restitution
       << ", mu_w = " << p.cushion_friction << "; cloth mu_s = " << p.cloth_friction << '\n';
   out << "  incoming:  V0 = " << shot.speed_mps << " m/s at alpha = " << shot.angle_deg
       << " deg, topspin " << shot.topspin_k << " V0/R, sidespin " << shot.sidespin_k << " V0/R\n";
   out << "             v = " << vectorText(incoming.v) << " m/s, w = " << vectorText(incoming.w)
       << " rad/s\n";
-  out << "  outgoing:  v = " << vectorText(result.after.v) << " m/s, w = "
-      << vectorText(result.after.w) << " rad/s\n";
+  out << "  outgoing:  v = " << vectorText(result.after.v)
+      << " m/s, w = " << vectorText(result.after.w) << " rad/s\n";
   out << "  rebound:   speed " << rebound.speed_mps << " m/s at " << rebound.angle_deg
       << " deg from the cushion line; speed ratio " << rebound.speed_mps / shot.speed_mps << '\n';
-  out << "  impulse:   P_c = " << result.compression_impulse_Ns << " N s (end of compression), P_f = "
-      << result.final_impulse_Ns << " N s; W_c = " << result.compression_work_J << " J\n";
+  out << "  impulse:   P_c = " << result.compression_impulse_Ns
+      << " N s (end of compression), P_f = " << result.final_impulse_Ns
+      << " N s; W_c = " << result.compression_work_J << " J\n";
   out << "  contacts:";
   if (result.contact_changes.empty()) out << " (stick/slip changes not tracked by this solver)";
   for (const physics::ContactChange& change : result.contact_changes) {
@@ -174,14 +176,16 @@ void solveAndPrint(CushionFlags& flags) {
   }
   validateFlags(flags);
   physics::validateCushionParams(flags.params);
-  if (!flags.sweep_directory.empty()) {
-    for (const std::string& path : writeCushionSweep(flags.sweep_directory, flags.params, flags.setting)) {
+  if (flags.sweep_flag->count() > 0) {
+    for (const std::string& path :
+         writeCushionSweep(flags.sweep_directory, flags.params, flags.setting)) {
       std::cout << "wrote " << path << '\n';
     }
     return;
   }
   const physics::BallVelocity incoming = incomingBallOf(flags.shot, flags.params.radius_m);
-  const physics::CushionImpactResult result = solveCushionShot(flags.params, incoming, flags.setting);
+  const physics::CushionImpactResult result =
+      solveCushionShot(flags.params, incoming, flags.setting);
   if (flags.json) {
     printJson(flags, incoming, result);
   } else {
@@ -206,27 +210,32 @@ void addCushionCommand(CLI::App& parent) {
       "Ball-cushion impact (Mathavan, Jackson & Parkin 2010): rebound of one shot, or with "
       "--sweep DIR the CSV data of the paper's figures 6, 7, 8 and 10");
 
-  CLI::Option* speed = command->add_option("--speed", flags->shot.speed_mps,
-                                           "incoming speed V0 (m/s)")->capture_default_str();
+  CLI::Option* speed =
+      command->add_option("--speed", flags->shot.speed_mps, "incoming speed V0 (m/s)")
+          ->capture_default_str();
   CLI::Option* angle =
-      command->add_option("--angle", flags->shot.angle_deg,
-                          "incidence angle alpha from the cushion line (deg); 90 is head-on")
+      command
+          ->add_option("--angle", flags->shot.angle_deg,
+                       "incidence angle alpha from the cushion line (deg); 90 is head-on")
           ->capture_default_str();
   CLI::Option* topspin =
-      command->add_option("--topspin", flags->shot.topspin_k,
-                          "topspin w_T in units of V0/R; 1 is natural roll, negative is backspin")
+      command
+          ->add_option("--topspin", flags->shot.topspin_k,
+                       "topspin w_T in units of V0/R; 1 is natural roll, negative is backspin")
           ->capture_default_str();
   CLI::Option* sidespin =
-      command->add_option("--sidespin", flags->shot.sidespin_k,
-                          "sidespin w_S in units of V0/R; positive is counter-clockwise from above")
+      command
+          ->add_option("--sidespin", flags->shot.sidespin_k,
+                       "sidespin w_S in units of V0/R; positive is counter-clockwise from above")
           ->capture_default_str();
   command->add_option("--solver", flags->solver, "paper (Euler in P, section 3.4) or exact")
       ->check(CLI::IsMember({"paper", "exact"}))
       ->capture_default_str();
   command->add_option("--steps", flags->setting.paper_steps, "paper solver: increments N")
       ->capture_default_str();
-  command->add_option("--tolerance", flags->setting.exact_tolerance,
-                      "exact solver: local error per step relative to V0")
+  command
+      ->add_option("--tolerance", flags->setting.exact_tolerance,
+                   "exact solver: local error per step relative to V0")
       ->capture_default_str();
 
   command->add_option("--mass", flags->params.mass_kg, "ball mass (kg)")->capture_default_str();
@@ -242,15 +251,16 @@ void addCushionCommand(CLI::App& parent) {
       ->capture_default_str();
 
   CLI::Option* json = command->add_flag("--json", flags->json, "print one JSON object");
-  command
-      ->add_option("--sweep", flags->sweep_directory,
-                   "write fig6.csv, fig7.csv, fig8.csv and fig10.csv into this directory "
-                   "(created if missing) instead of solving one shot")
-      ->excludes(speed)
-      ->excludes(angle)
-      ->excludes(topspin)
-      ->excludes(sidespin)
-      ->excludes(json);
+  flags->sweep_flag =
+      command
+          ->add_option("--sweep", flags->sweep_directory,
+                       "write fig6.csv, fig7.csv, fig8.csv and fig10.csv into this directory "
+                       "(created if missing) instead of solving one shot")
+          ->excludes(speed)
+          ->excludes(angle)
+          ->excludes(topspin)
+          ->excludes(sidespin)
+          ->excludes(json);
 
   command->callback([flags] {
     if (const int status = runReportingErrors("cushion", [&] { runCushion(*flags); })) {

@@ -16,7 +16,7 @@ enum class SolverKind { Paper, Exact };
 
 struct SolverSetting {
   SolverKind kind = SolverKind::Exact;
-  int paper_steps = physics::PaperSolverOptions{}.steps;              // N, paper solver only
+  int paper_steps = physics::PaperSolverOptions{}.steps;             // N, paper solver only
   double exact_tolerance = physics::ExactSolverOptions{}.tolerance;  // exact solver only
 };
 

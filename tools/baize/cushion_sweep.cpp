@@ -31,7 +31,8 @@ std::vector<CurveFamily> reboundFamilies() {
     return s;
   };
   return {
-      {"fig6.csv", {shot(0.5, 1, 0), shot(1.0, 1, 0), shot(1.5, 1, 0), shot(2.0, 1, 0), shot(2.5, 1, 0)}},
+      {"fig6.csv",
+       {shot(0.5, 1, 0), shot(1.0, 1, 0), shot(1.5, 1, 0), shot(2.0, 1, 0), shot(2.5, 1, 0)}},
       {"fig7.csv", {shot(1, -1, 0), shot(1, 0, 0), shot(1, 1, 0), shot(1, 2, 0), shot(1, 3, 0)}},
       {"fig8.csv", {shot(1, 1, -2), shot(1, 1, -1), shot(1, 1, 0), shot(1, 1, 1), shot(1, 1, 2)}},
   };
@@ -40,8 +41,10 @@ std::vector<CurveFamily> reboundFamilies() {
 void writeReboundFamily(AtomicFile& file, const CurveFamily& family,
                         const physics::CushionParams& params, const SolverSetting& setting) {
   std::ostream& out = file.stream();
-  out << "speed_mps,topspin_k,sidespin_k,alpha_deg,rebound_speed_mps,rebound_angle_deg,speed_ratio\n";
-  const int angle_count = static_cast<int>(std::lround((kLastAngleDeg - kFirstAngleDeg) / kAngleStepDeg)) + 1;
+  out << "speed_mps,topspin_k,sidespin_k,alpha_deg,"
+         "rebound_speed_mps,rebound_angle_deg,speed_ratio\n";
+  const int angle_count =
+      static_cast<int>(std::lround((kLastAngleDeg - kFirstAngleDeg) / kAngleStepDeg)) + 1;
   for (CushionShot shot : family.curves) {
     for (int i = 0; i < angle_count; ++i) {
       shot.angle_deg = kFirstAngleDeg + i * kAngleStepDeg;
@@ -87,10 +90,12 @@ std::vector<std::string> writeCushionSweep(const std::string& directory,
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) {
-    throw std::runtime_error("--sweep = " + directory + ": cannot create the directory: " +
-                             error.message());
+    throw std::runtime_error("--sweep = " + directory +
+                             ": cannot create the directory: " + error.message());
   }
-  const auto pathOf = [&](const char* name) { return (std::filesystem::path(directory) / name).string(); };
+  const auto pathOf = [&](const char* name) {
+    return (std::filesystem::path(directory) / name).string();
+  };
   std::vector<std::string> written;
   for (const CurveFamily& family : reboundFamilies()) {
     AtomicFile file(pathOf(family.file_name), "--sweep");
