@@ -19,7 +19,7 @@ namespace {
 
 struct CushionFlags {
   CushionShot shot;
-  std::string solver = "paper";  // the exact solver is experimental until issue #2 is done
+  std::string solver = "exact";
   SolverSetting setting;
   physics::CushionParams params;
   CLI::Option* contact_height_flag = nullptr;  // unset: h = 7R/5 of the radius in use
