@@ -1,11 +1,12 @@
 #include "physics/ball_ball_impact.h"
 
+#include "physics/value_text.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -74,21 +75,6 @@
 
 namespace baize::physics {
 namespace {
-
-std::string show(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
-}
-
-[[noreturn]] void reject(const std::string& what, double value, const std::string& allowed) {
-  throw std::invalid_argument(what + " = " + show(value) + " is not allowed: " + allowed);
-}
-
-void requireFinite(const std::string& what, double value) {
-  if (!std::isfinite(value)) reject(what, value, "it must be a finite number");
-}
 
 // Dimensionless tolerances of the Mathavan integrator, all relative to the problem's scales.
 // Event residuals, relative to the approach speed and to the compression work: far above
@@ -437,11 +423,11 @@ void validateBallBallParams(const BallBallParams& p) {
   requireFinite("ball 1 mass (kg)", p.mass1_kg);
   requireFinite("ball 2 mass (kg)", p.mass2_kg);
   requireFinite("ball-ball restitution e", p.restitution);
-  if (!(p.radius_m > 0)) reject("ball radius (m)", p.radius_m, "it must be > 0");
-  if (!(p.mass1_kg > 0)) reject("ball 1 mass (kg)", p.mass1_kg, "it must be > 0");
-  if (!(p.mass2_kg > 0)) reject("ball 2 mass (kg)", p.mass2_kg, "it must be > 0");
+  if (!(p.radius_m > 0)) rejectValue("ball radius (m)", p.radius_m, "it must be > 0");
+  if (!(p.mass1_kg > 0)) rejectValue("ball 1 mass (kg)", p.mass1_kg, "it must be > 0");
+  if (!(p.mass2_kg > 0)) rejectValue("ball 2 mass (kg)", p.mass2_kg, "it must be > 0");
   if (!(p.restitution >= 0 && p.restitution <= 1)) {
-    reject("ball-ball restitution e", p.restitution, "it must lie in [0, 1]");
+    rejectValue("ball-ball restitution e", p.restitution, "it must lie in [0, 1]");
   }
   switch (p.model) {
     case BallBallModel::FrictionalInelastic:
@@ -449,20 +435,20 @@ void validateBallBallParams(const BallBallParams& p) {
         requireFinite("friction fit a", p.friction_fit_a);
         requireFinite("friction fit b", p.friction_fit_b);
         requireFinite("friction fit c (s/m)", p.friction_fit_c_s_per_m);
-        if (!(p.friction_fit_a >= 0)) reject("friction fit a", p.friction_fit_a, "it must be >= 0");
-        if (!(p.friction_fit_b >= 0)) reject("friction fit b", p.friction_fit_b, "it must be >= 0");
+        if (!(p.friction_fit_a >= 0)) rejectValue("friction fit a", p.friction_fit_a, "it must be >= 0");
+        if (!(p.friction_fit_b >= 0)) rejectValue("friction fit b", p.friction_fit_b, "it must be >= 0");
         if (!(p.friction_fit_c_s_per_m >= 0)) {
-          reject("friction fit c (s/m)", p.friction_fit_c_s_per_m, "it must be >= 0");
+          rejectValue("friction fit c (s/m)", p.friction_fit_c_s_per_m, "it must be >= 0");
         }
         // mu at zero slip speed is a + b, the largest the fit gives.
         if (!(p.friction_fit_a + p.friction_fit_b < 1)) {
-          reject("friction fit a + b", p.friction_fit_a + p.friction_fit_b,
+          rejectValue("friction fit a + b", p.friction_fit_a + p.friction_fit_b,
                  "the friction at zero slip speed must lie below 1");
         }
       } else if (p.friction_law == BallBallFrictionLaw::Constant) {
         requireFinite("ball-ball friction mu", p.constant_friction);
         if (!(p.constant_friction >= 0 && p.constant_friction < 1)) {
-          reject("ball-ball friction mu", p.constant_friction, "it must lie in [0, 1)");
+          rejectValue("ball-ball friction mu", p.constant_friction, "it must lie in [0, 1)");
         }
       } else {
         throw std::invalid_argument("ball-ball friction law = " +
@@ -475,20 +461,20 @@ void validateBallBallParams(const BallBallParams& p) {
       requireFinite("cloth friction mu_s", p.cloth_friction);
       requireFinite("integration tolerance", p.tolerance);
       if (!(p.cloth_friction >= 0 && p.cloth_friction < 1)) {
-        reject("cloth friction mu_s", p.cloth_friction, "it must lie in [0, 1)");
+        rejectValue("cloth friction mu_s", p.cloth_friction, "it must lie in [0, 1)");
       }
       // Keeps the cloth contacts slipping throughout the impact (see the derivation above).
       const double mu_b_limit = 1 / (2.5 + 3.5 * p.cloth_friction);
       if (!(p.ball_friction >= 0 && p.ball_friction < mu_b_limit)) {
-        reject("ball-ball friction mu_b", p.ball_friction,
-               "with mu_s = " + show(p.cloth_friction) + " it must lie in [0, " + show(mu_b_limit) +
+        rejectValue("ball-ball friction mu_b", p.ball_friction,
+               "with mu_s = " + valueText(p.cloth_friction) + " it must lie in [0, " + valueText(mu_b_limit) +
                    "), or a cloth contact could stick during the impact");
       }
       if (!(p.tolerance >= 1e-14 && p.tolerance <= 1e-3)) {
-        reject("integration tolerance", p.tolerance, "it must lie in [1e-14, 1e-3]");
+        rejectValue("integration tolerance", p.tolerance, "it must lie in [1e-14, 1e-3]");
       }
       if (p.fixed_steps < 0) {
-        reject("fixed Euler steps", p.fixed_steps, "it must be >= 0 (0 selects the adaptive solver)");
+        rejectValue("fixed Euler steps", p.fixed_steps, "it must be >= 0 (0 selects the adaptive solver)");
       }
       break;
     }
@@ -513,17 +499,17 @@ void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball
     requireFinite(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i]);
     requireFinite(std::string("line of centres n_") + axes[i], n[i]);
   }
-  if (ball1.v.z() != 0) reject("ball 1 v_z (m/s)", ball1.v.z(), "the ball must be on the table (0)");
-  if (ball2.v.z() != 0) reject("ball 2 v_z (m/s)", ball2.v.z(), "the ball must be on the table (0)");
+  if (ball1.v.z() != 0) rejectValue("ball 1 v_z (m/s)", ball1.v.z(), "the ball must be on the table (0)");
+  if (ball2.v.z() != 0) rejectValue("ball 2 v_z (m/s)", ball2.v.z(), "the ball must be on the table (0)");
   if (!(std::abs(n.norm() - 1) <= kLineOfCentresTolerance)) {
-    reject("line of centres |n|", n.norm(), "it must be a unit vector (within 1e-9)");
+    rejectValue("line of centres |n|", n.norm(), "it must be a unit vector (within 1e-9)");
   }
   if (!(std::abs(n.z()) <= kLineOfCentresTolerance)) {
-    reject("line of centres n_z", n.z(), "balls on the table touch at their equators (0 within 1e-9)");
+    rejectValue("line of centres n_z", n.z(), "balls on the table touch at their equators (0 within 1e-9)");
   }
   const double approach = approachSpeed(ball1, ball2, n);
   if (!(approach > 0)) {
-    reject("approach speed (v1 - v2) . n (m/s)", approach,
+    rejectValue("approach speed (v1 - v2) . n (m/s)", approach,
            "the balls must approach along the line of centres (> 0); a separating or grazing pair "
            "needs no impact");
   }

@@ -1,8 +1,9 @@
 #include "physics/cloth_motion.h"
 
+#include "physics/value_text.h"
+
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -12,21 +13,6 @@ namespace {
 // A sequence of states only moves forward (sliding, rolling, spinning, stationary), so a lone ball
 // changes state at most three times; the loop in advance() allows one more as a margin.
 constexpr int kMaxStateChanges = 4;
-
-std::string show(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
-}
-
-[[noreturn]] void reject(const std::string& what, double value, const std::string& allowed) {
-  throw std::invalid_argument(what + " = " + show(value) + " is not allowed: " + allowed);
-}
-
-void requireFinite(const std::string& what, double value) {
-  if (!std::isfinite(value)) reject(what, value, "it must be a finite number");
-}
 
 // sqrt is correctly rounded on every IEEE machine, std::hypot is not: same input, same output.
 double length(const Eigen::Vector2d& a) { return std::sqrt(a.x() * a.x() + a.y() * a.y()); }
@@ -151,19 +137,19 @@ void validateClothParams(const ClothParams& p) {
   requireFinite("cloth sliding friction mu_s", p.sliding_friction);
   requireFinite("cloth rolling friction mu_r", p.rolling_friction);
   requireFinite("cloth spinning friction mu_sp", p.spinning_friction);
-  if (!(p.radius_m > 0)) reject("ball radius R (m)", p.radius_m, "it must be > 0");
-  if (!(p.gravity_mps2 > 0)) reject("gravity g (m/s^2)", p.gravity_mps2, "it must be > 0");
+  if (!(p.radius_m > 0)) rejectValue("ball radius R (m)", p.radius_m, "it must be > 0");
+  if (!(p.gravity_mps2 > 0)) rejectValue("gravity g (m/s^2)", p.gravity_mps2, "it must be > 0");
   // Zero friction would make a state last forever; 1 and above is not cloth.
   if (!(p.sliding_friction > 0 && p.sliding_friction < 1)) {
-    reject("cloth sliding friction mu_s", p.sliding_friction, "it must lie in (0, 1)");
+    rejectValue("cloth sliding friction mu_s", p.sliding_friction, "it must lie in (0, 1)");
   }
   if (!(p.rolling_friction > 0 && p.rolling_friction < p.sliding_friction)) {
-    reject("cloth rolling friction mu_r", p.rolling_friction,
-           "it must lie in (0, mu_s) = (0, " + show(p.sliding_friction) +
+    rejectValue("cloth rolling friction mu_r", p.rolling_friction,
+           "it must lie in (0, mu_s) = (0, " + valueText(p.sliding_friction) +
                "): rolling resistance is far below sliding friction");
   }
   if (!(p.spinning_friction > 0 && p.spinning_friction < 1)) {
-    reject("cloth spinning friction mu_sp", p.spinning_friction, "it must lie in (0, 1)");
+    rejectValue("cloth spinning friction mu_sp", p.spinning_friction, "it must lie in (0, 1)");
   }
 }
 
@@ -182,7 +168,7 @@ void validateBallState(const BallState& ball) {
                   ball.angular_velocity[i]);
   }
   if (ball.velocity.z() != 0) {
-    reject("ball velocity v_z (m/s)", ball.velocity.z(), "a ball on the cloth has v_z = 0");
+    rejectValue("ball velocity v_z (m/s)", ball.velocity.z(), "a ball on the cloth has v_z = 0");
   }
 }
 
@@ -221,8 +207,8 @@ BallState advanceWithinState(const ClothParams& params, const BallState& ball, d
   const MotionState state = classify(params, ball);
   const double duration = durationOf(params, ball, state);
   if (!(dt_s >= 0 && dt_s <= duration && std::isfinite(dt_s))) {
-    reject("time step dt (s)", dt_s,
-           std::string("it must lie in [0, ") + show(duration) + "], the time the ball stays " +
+    rejectValue("time step dt (s)", dt_s,
+           std::string("it must lie in [0, ") + valueText(duration) + "], the time the ball stays " +
                motionStateName(state));
   }
   return withinState(params, ball, state, duration, dt_s);
@@ -231,7 +217,7 @@ BallState advanceWithinState(const ClothParams& params, const BallState& ball, d
 BallState advance(const ClothParams& params, const BallState& ball, double dt_s) {
   validateInputs(params, ball);
   if (!(dt_s >= 0 && std::isfinite(dt_s))) {
-    reject("time step dt (s)", dt_s, "it must be a finite number >= 0");
+    rejectValue("time step dt (s)", dt_s, "it must be a finite number >= 0");
   }
   BallState current = ball;
   double remaining = dt_s;

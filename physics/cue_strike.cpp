@@ -1,8 +1,9 @@
 #include "physics/cue_strike.h"
 
+#include "physics/value_text.h"
+
 #include <Eigen/Geometry>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -31,21 +32,6 @@
 namespace baize::physics {
 namespace {
 
-std::string show(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
-}
-
-[[noreturn]] void reject(const std::string& what, double value, const std::string& allowed) {
-  throw std::invalid_argument(what + " = " + show(value) + " is not allowed: " + allowed);
-}
-
-void requireFinite(const std::string& what, double value) {
-  if (!std::isfinite(value)) reject(what, value, "it must be a finite number");
-}
-
 constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
@@ -55,16 +41,16 @@ void validateCueStrikeParams(const CueStrikeParams& p) {
   requireFinite("cue tip restitution e_tip", p.tip_restitution);
   requireFinite("ball mass (kg)", p.ball_mass_kg);
   requireFinite("ball radius (m)", p.ball_radius_m);
-  if (!(p.cue_mass_kg > 0)) reject("cue mass (kg)", p.cue_mass_kg, "it must be > 0");
+  if (!(p.cue_mass_kg > 0)) rejectValue("cue mass (kg)", p.cue_mass_kg, "it must be > 0");
   if (!(p.tip_restitution >= 0 && p.tip_restitution <= 1)) {
-    reject("cue tip restitution e_tip", p.tip_restitution, "it must lie in [0, 1]");
+    rejectValue("cue tip restitution e_tip", p.tip_restitution, "it must lie in [0, 1]");
   }
-  if (!(p.ball_mass_kg > 0)) reject("ball mass (kg)", p.ball_mass_kg, "it must be > 0");
-  if (!(p.ball_radius_m > 0)) reject("ball radius (m)", p.ball_radius_m, "it must be > 0");
+  if (!(p.ball_mass_kg > 0)) rejectValue("ball mass (kg)", p.ball_mass_kg, "it must be > 0");
+  if (!(p.ball_radius_m > 0)) rejectValue("ball radius (m)", p.ball_radius_m, "it must be > 0");
   if (p.end_mass_kg) {
     requireFinite("cue end mass (kg)", *p.end_mass_kg);
     if (!(*p.end_mass_kg > 0)) {
-      reject("cue end mass (kg)", *p.end_mass_kg, "it must be > 0 (leave it empty for no squirt)");
+      rejectValue("cue end mass (kg)", *p.end_mass_kg, "it must be > 0 (leave it empty for no squirt)");
     }
   }
 }
@@ -75,16 +61,16 @@ void validateCueShot(const CueShot& s) {
   requireFinite("cue elevation theta (rad)", s.elevation_rad);
   requireFinite("tip side offset a (units of R)", s.side_offset);
   requireFinite("tip height offset b (units of R)", s.height_offset);
-  if (!(s.speed_mps >= 0)) reject("cue speed V (m/s)", s.speed_mps, "it must be >= 0");
+  if (!(s.speed_mps >= 0)) rejectValue("cue speed V (m/s)", s.speed_mps, "it must be >= 0");
   if (!(s.elevation_rad >= 0 && s.elevation_rad < kPi / 2)) {
-    reject("cue elevation theta (rad)", s.elevation_rad,
+    rejectValue("cue elevation theta (rad)", s.elevation_rad,
            "it must lie in [0, pi/2): the cue cannot come from below the table or straight down");
   }
   const double offset = std::hypot(s.side_offset, s.height_offset);
   if (!(offset <= kMiscueOffsetLimit)) {
-    reject("tip offset sqrt(a^2 + b^2) (units of R)", offset,
-           "it must be at most " + show(kMiscueOffsetLimit) + " or the tip miscues (a = " +
-               show(s.side_offset) + ", b = " + show(s.height_offset) + ")");
+    rejectValue("tip offset sqrt(a^2 + b^2) (units of R)", offset,
+           "it must be at most " + valueText(kMiscueOffsetLimit) + " or the tip miscues (a = " +
+               valueText(s.side_offset) + ", b = " + valueText(s.height_offset) + ")");
   }
 }
 
@@ -104,9 +90,9 @@ CueStrikeResult strikeCueBall(const CueStrikeParams& params, const CueShot& shot
   // The tip must meet Q first along the cue line: Q . d = -R (c cos th + b sin th) < 0.
   const double facing = c * cos_th + b * sin_th;
   if (!(facing > 0)) {
-    reject("cue elevation theta (rad)", shot.elevation_rad,
-           "with b = " + show(b) + " the cue line meets the ball behind the tip point " +
-               "(c cos(theta) + b sin(theta) = " + show(facing) + " must be > 0)");
+    rejectValue("cue elevation theta (rad)", shot.elevation_rad,
+           "with b = " + valueText(b) + " the cue line meets the ball behind the tip point " +
+               "(c cos(theta) + b sin(theta) = " + valueText(facing) + " must be > 0)");
   }
   const double cross = b * cos_th - c * sin_th;
   const double offset_sq = a * a + cross * cross;  // (l / R)^2

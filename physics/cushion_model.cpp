@@ -6,20 +6,6 @@
 #include <stdexcept>
 
 namespace baize::physics {
-namespace {
-
-std::string show(double value) { return valueText(value); }
-
-[[noreturn]] void reject(const std::string& what, double value, const std::string& allowed) {
-  rejectValue(what, value, allowed);
-}
-
-void requireFinite(const std::string& what, double value) {
-  if (!std::isfinite(value)) reject(what, value, "it must be a finite number");
-}
-
-}  // namespace
-
 double contactSinTheta(const CushionParams& params) {
   return (params.contact_height_m - params.radius_m) / params.radius_m;
 }
@@ -31,36 +17,36 @@ void validateCushionParams(const CushionParams& p) {
   requireFinite("cushion restitution e_e", p.restitution);
   requireFinite("cushion friction mu_w", p.cushion_friction);
   requireFinite("cloth friction mu_s", p.cloth_friction);
-  if (p.mass_kg <= 0) reject("ball mass (kg)", p.mass_kg, "it must be > 0");
-  if (p.radius_m <= 0) reject("ball radius (m)", p.radius_m, "it must be > 0");
+  if (p.mass_kg <= 0) rejectValue("ball mass (kg)", p.mass_kg, "it must be > 0");
+  if (p.radius_m <= 0) rejectValue("ball radius (m)", p.radius_m, "it must be > 0");
   if (!(p.contact_height_m > p.radius_m && p.contact_height_m < 2 * p.radius_m)) {
-    reject("cushion contact height h (m)", p.contact_height_m,
-           "it must lie strictly between R = " + show(p.radius_m) + " and 2R = " +
-               show(2 * p.radius_m) + " (the nose touches the upper half of the ball)");
+    rejectValue("cushion contact height h (m)", p.contact_height_m,
+           "it must lie strictly between R = " + valueText(p.radius_m) + " and 2R = " +
+               valueText(2 * p.radius_m) + " (the nose touches the upper half of the ball)");
   }
   if (!(p.restitution > 0 && p.restitution <= 1)) {
-    reject("cushion restitution e_e", p.restitution, "it must lie in (0, 1]");
+    rejectValue("cushion restitution e_e", p.restitution, "it must lie in (0, 1]");
   }
   const double s = contactSinTheta(p);
   const double c = std::sqrt(1 - s * s);
   const double tan_theta = s / c;
   if (!(p.cushion_friction >= 0 && p.cushion_friction < tan_theta)) {
-    reject("cushion friction mu_w", p.cushion_friction,
-           "it must lie in [0, tan(theta)) = [0, " + show(tan_theta) +
+    rejectValue("cushion friction mu_w", p.cushion_friction,
+           "it must lie in [0, tan(theta)) = [0, " + valueText(tan_theta) +
                ") for this contact height, or the table's reaction on the ball turns negative");
   }
   // Below 1 the stick equations stay well posed; real cloth is 0.15 to 0.4.
   if (!(p.cloth_friction >= 0 && p.cloth_friction < 1)) {
-    reject("cloth friction mu_s", p.cloth_friction, "it must lie in [0, 1)");
+    rejectValue("cloth friction mu_s", p.cloth_friction, "it must lie in [0, 1)");
   }
   // The normal velocity must fall at every instant whatever the slip directions, or the cushion
   // could not stop the ball: cos th - mu_w sin th - mu_s (sin th + mu_w cos th) > 0.
   const double worst_normal_rate =
       c - p.cushion_friction * s - p.cloth_friction * (s + p.cushion_friction * c);
   if (!(worst_normal_rate > 0)) {
-    reject("cloth friction mu_s", p.cloth_friction,
-           "with mu_w = " + show(p.cushion_friction) + " and sin(theta) = " + show(s) +
-               " it must be below " + show((c - p.cushion_friction * s) / (s + p.cushion_friction * c)) +
+    rejectValue("cloth friction mu_s", p.cloth_friction,
+           "with mu_w = " + valueText(p.cushion_friction) + " and sin(theta) = " + valueText(s) +
+               " it must be below " + valueText((c - p.cushion_friction * s) / (s + p.cushion_friction * c)) +
                ", or friction could hold the ball against the cushion");
   }
 }
@@ -80,9 +66,9 @@ void validateIncomingBall(const BallVelocity& ball) {
     requireFinite(std::string("incoming ") + names[i] + " (m/s)", ball.v[i]);
     requireFinite(std::string("incoming ") + names[i + 3] + " (rad/s)", ball.w[i]);
   }
-  if (ball.v.z() != 0) reject("incoming v_z (m/s)", ball.v.z(), "the ball must be on the table (0)");
+  if (ball.v.z() != 0) rejectValue("incoming v_z (m/s)", ball.v.z(), "the ball must be on the table (0)");
   if (!(ball.v.y() > 0)) {
-    reject("incoming v_y (m/s)", ball.v.y(),
+    rejectValue("incoming v_y (m/s)", ball.v.y(),
            "the ball must move into the cushion (v_y > 0; the angle must lie in (0, 180) degrees)");
   }
 }

@@ -11,4 +11,7 @@ std::string valueText(double value);
 // Throws std::invalid_argument("<what> = <value> is not allowed: <allowed>").
 [[noreturn]] void rejectValue(const std::string& what, double value, const std::string& allowed);
 
+// Rejects `value` unless it is finite.
+void requireFinite(const std::string& what, double value);
+
 }  // namespace baize::physics
