@@ -160,9 +160,9 @@ double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() 
 
 double stepFactor(double error) {
   if (!(error > 0)) return kStepMaxFactor;
-  // The 8th-order estimate divided by the step's share of the impulse (error per unit step) grows as
-  // the 7th power of the step.
-  return std::clamp(kStepSafety * std::pow(error, -1.0 / 7), kStepMinFactor, kStepMaxFactor);
+  // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
+  // the share leaves that order (above the floor it is one lower, which the safety factor covers).
+  return std::clamp(kStepSafety * std::pow(error, -1.0 / 8), kStepMinFactor, kStepMaxFactor);
 }
 
 // The root in (0, 1) of the cubic with values g0 > 0 and g1 <= 0 and slopes d0, d1 at 0 and 1
