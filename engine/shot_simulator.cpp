@@ -1,0 +1,290 @@
+#include "engine/shot_simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <tuple>
+
+#include "physics/polynomial_roots.h"
+#include "physics/value_text.h"
+
+namespace baize::engine {
+namespace {
+
+using physics::BallState;
+using physics::PolynomialCoefficients;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Balls may start this much closer than touching (m) and still count as touching: positions written
+// in a scene file or placed by a rack round to about this.
+constexpr double kContactSlack_m = 1e-9;
+
+struct Candidate {
+  double dt_s = kInfinity;  // from now
+  EventKind kind = EventKind::StateChange;
+  int ball = -1, other = -1, index = -1;
+
+  // Earliest first; ties broken by kind, then by the balls' and the cushion's or pocket's numbers,
+  // so the same input always resolves in the same order.
+  bool operator<(const Candidate& c) const {
+    return std::make_tuple(dt_s, static_cast<int>(kind), ball, other, index) <
+           std::make_tuple(c.dt_s, static_cast<int>(c.kind), c.ball, c.other, c.index);
+  }
+  bool sameContact(const Candidate& c) const {
+    return kind == c.kind && ball == c.ball && other == c.other && index == c.index;
+  }
+};
+
+bool moving(const physics::ClothParams& cloth, const BallState& ball) {
+  const physics::MotionState state = physics::motionState(cloth, ball);
+  return state == physics::MotionState::Sliding || state == physics::MotionState::Rolling;
+}
+
+// |c + l t + q t^2 - centre|^2 - distance^2 as coefficients in t.
+PolynomialCoefficients squaredGap(const physics::PositionQuadratic& path, const Eigen::Vector2d& centre,
+                                  const Eigen::Vector2d& linear_other, const Eigen::Vector2d& quadratic_other,
+                                  double distance) {
+  const Eigen::Vector2d c = path.constant_m - centre;
+  const Eigen::Vector2d l = path.linear_mps - linear_other;
+  const Eigen::Vector2d q = path.quadratic_mps2 - quadratic_other;
+  return {c.dot(c) - distance * distance, 2 * c.dot(l), l.dot(l) + 2 * c.dot(q), 2 * l.dot(q), q.dot(q)};
+}
+
+// Furthest a ball can travel within dt along its current path, m (a bound, for skipping pairs).
+double reach(const physics::PositionQuadratic& path, double dt) {
+  return path.linear_mps.norm() * dt + path.quadratic_mps2.norm() * dt * dt;
+}
+
+// The cushion's local frame: y into the cushion (against the inward normal), x along it, z up.
+struct CushionFrame {
+  Eigen::Vector3d x, y;
+  explicit CushionFrame(const Eigen::Vector2d& inward_normal)
+      : x(-inward_normal.y(), inward_normal.x(), 0), y(-inward_normal.x(), -inward_normal.y(), 0) {}
+  physics::BallVelocity toLocal(const BallState& ball) const {
+    physics::BallVelocity local;
+    local.v = {ball.velocity.dot(x), ball.velocity.dot(y), 0};
+    local.w = {ball.angular_velocity.dot(x), ball.angular_velocity.dot(y), ball.angular_velocity.z()};
+    return local;
+  }
+  void toTable(const physics::BallVelocity& local, BallState* ball) const {
+    ball->velocity = local.v.x() * x + local.v.y() * y;
+    ball->velocity.z() = 0;
+    ball->angular_velocity = local.w.x() * x + local.w.y() * y + Eigen::Vector3d(0, 0, local.w.z());
+  }
+};
+
+void validateInput(const SimulationParams& p, const TableGeometry& table, const std::vector<BallState>& balls) {
+  physics::validateClothParams(p.cloth);
+  physics::validateCushionParams(p.cushion);
+  physics::validateBallBallParams(p.ball_ball);
+  const double R = p.cushion.radius_m;
+  if (p.cloth.radius_m != R || p.ball_ball.radius_m != R) {
+    physics::rejectValue("ball radius of the cloth and ball-ball parameters (m)", p.cloth.radius_m,
+                         "it must equal the cushion parameters' radius " + physics::valueText(R));
+  }
+  if (p.ball_ball.mass1_kg != p.cushion.mass_kg || p.ball_ball.mass2_kg != p.cushion.mass_kg) {
+    physics::rejectValue("ball mass of the ball-ball parameters (kg)", p.ball_ball.mass1_kg,
+                         "it must equal the cushion parameters' mass " + physics::valueText(p.cushion.mass_kg));
+  }
+  if (!(p.max_events > 0)) physics::rejectValue("max_events", static_cast<double>(p.max_events), "it must be > 0");
+  for (const CushionSegment& c : table.cushions) {
+    if (!(std::abs(c.inward_normal.norm() - 1) < 1e-9) || !((c.end - c.start).norm() > 0)) {
+      throw std::invalid_argument("cushion segment: it needs a unit inward normal and two distinct ends");
+    }
+  }
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const std::string who = "ball " + std::to_string(i);
+    try {
+      physics::validateBallState(balls[i]);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(who + ": " + e.what());
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const double gap = (balls[i].position - balls[j].position).norm() - 2 * R;
+      if (gap < -kContactSlack_m) {
+        physics::rejectValue(who + " overlaps ball " + std::to_string(j) + ": their gap (m)", gap,
+                             "balls may touch but not overlap (gap >= 0)");
+      }
+    }
+    for (std::size_t k = 0; k < table.cushions.size(); ++k) {
+      const CushionSegment& c = table.cushions[k];
+      const Eigen::Vector2d along = c.end - c.start;
+      const double s = (balls[i].position - c.start).dot(along) / along.squaredNorm();
+      const double distance = c.inward_normal.dot(balls[i].position - c.start);
+      if (s >= 0 && s <= 1 && distance < R - kContactSlack_m) {
+        physics::rejectValue(who + " is beyond cushion " + std::to_string(k) + ": its centre's distance from it (m)",
+                             distance, "it must be at least the radius " + physics::valueText(R));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TableGeometry rectangularTable(double length_m, double width_m) {
+  if (!(length_m > 0 && std::isfinite(length_m))) physics::rejectValue("table length (m)", length_m, "it must be > 0");
+  if (!(width_m > 0 && std::isfinite(width_m))) physics::rejectValue("table width (m)", width_m, "it must be > 0");
+  const double x = length_m / 2, y = width_m / 2;
+  TableGeometry table;
+  table.cushions = {{{-x, -y}, {x, -y}, {0, 1}},
+                    {{x, -y}, {x, y}, {-1, 0}},
+                    {{x, y}, {-x, y}, {0, -1}},
+                    {{-x, y}, {-x, -y}, {1, 0}}};
+  return table;
+}
+
+SimulationParams poolSimulationParams() {
+  SimulationParams p;
+  p.cushion.mass_kg = 0.17;
+  p.cushion.radius_m = 0.028575;
+  p.cushion.contact_height_m = 0.635 * 2 * p.cushion.radius_m;
+  p.cushion.cloth_friction = p.cloth.sliding_friction;
+  return p;
+}
+
+const char* eventKindName(EventKind kind) {
+  switch (kind) {
+    case EventKind::StateChange: return "state change";
+    case EventKind::BallBall: return "ball-ball";
+    case EventKind::Cushion: return "cushion";
+    case EventKind::Pocket: return "pocket";
+  }
+  return "?";
+}
+
+SimulationResult simulate(const SimulationParams& p, const TableGeometry& table, const std::vector<BallState>& input) {
+  validateInput(p, table, input);
+  const double R = p.cushion.radius_m;
+  SimulationResult result;
+  std::vector<BallRecord> balls(input.size());
+  for (std::size_t i = 0; i < input.size(); ++i) balls[i].state = input[i];
+  double now = 0;
+  Candidate last;  // the contact resolved last, not to be found again at the same instant
+  bool last_valid = false;
+
+  for (long count = 0;; ++count) {
+    if (count == p.max_events) {
+      throw std::runtime_error("the shot did not come to rest within max_events = " +
+                               std::to_string(p.max_events) + " events (at t = " + physics::valueText(now) + " s)");
+    }
+    const int n = static_cast<int>(balls.size());
+    std::vector<double> until(n, kInfinity);  // time to each ball's next state change
+    std::vector<physics::PositionQuadratic> path(n);
+    for (int i = 0; i < n; ++i) {
+      if (balls[i].pocketed) continue;
+      until[i] = physics::timeToStateChange(p.cloth, balls[i].state);
+      path[i] = physics::positionQuadratic(p.cloth, balls[i].state);
+    }
+    Candidate best;
+    auto consider = [&](const Candidate& c) {
+      if (!(c.dt_s < kInfinity)) return;
+      if (last_valid && c.dt_s == 0 && c.sameContact(last)) return;
+      if (c < best) best = c;
+    };
+    for (int i = 0; i < n; ++i) {
+      if (balls[i].pocketed) continue;
+      consider({until[i], EventKind::StateChange, i});
+      if (!moving(p.cloth, balls[i].state)) continue;
+      const double horizon = std::isfinite(until[i]) ? until[i] : 0;
+      for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) {
+        const CushionSegment& c = table.cushions[k];
+        const PolynomialCoefficients gap = {c.inward_normal.dot(path[i].constant_m - c.start) - R,
+                                            c.inward_normal.dot(path[i].linear_mps),
+                                            c.inward_normal.dot(path[i].quadratic_mps2), 0, 0};
+        ++result.predictions;
+        const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+        if (hit.outcome != physics::RootOutcome::Root) continue;
+        const Eigen::Vector2d along = c.end - c.start;
+        const double s = (path[i].at(hit.time) - c.start).dot(along) / along.squaredNorm();
+        if (s >= 0 && s <= 1) consider({hit.time, EventKind::Cushion, i, -1, k});
+      }
+      for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
+        const PocketCircle& pocket = table.pockets[k];
+        ++result.predictions;
+        const PolynomialCoefficients gap =
+            squaredGap(path[i], pocket.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), pocket.radius_m);
+        const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+        if (hit.outcome == physics::RootOutcome::Root) consider({hit.time, EventKind::Pocket, i, -1, k});
+      }
+    }
+    for (int i = 0; i < n; ++i) {
+      if (balls[i].pocketed) continue;
+      for (int j = i + 1; j < n; ++j) {
+        if (balls[j].pocketed) continue;
+        const bool i_moves = moving(p.cloth, balls[i].state), j_moves = moving(p.cloth, balls[j].state);
+        if (!i_moves && !j_moves) {
+          ++result.skipped_predictions;
+          continue;
+        }
+        const double horizon = std::min(i_moves ? until[i] : kInfinity, j_moves ? until[j] : kInfinity);
+        // Cheap bound first: too far apart to meet before either changes state.
+        const double apart = (balls[i].state.position - balls[j].state.position).norm() - 2 * R;
+        if (apart > reach(path[i], horizon) + reach(path[j], horizon)) {
+          ++result.skipped_predictions;
+          continue;
+        }
+        ++result.predictions;
+        const PolynomialCoefficients gap =
+            squaredGap(path[i], path[j].constant_m, path[j].linear_mps, path[j].quadratic_mps2, 2 * R);
+        const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+        if (hit.outcome == physics::RootOutcome::Root) consider({hit.time, EventKind::BallBall, i, j});
+      }
+    }
+    if (!(best.dt_s < kInfinity)) break;  // every ball at rest or pocketed
+
+    // Move every ball to the event's instant.
+    for (int i = 0; i < n; ++i) {
+      if (balls[i].pocketed) continue;
+      const double dt = std::min(best.dt_s, until[i]);
+      if (dt > 0) balls[i].state = physics::advanceWithinState(p.cloth, balls[i].state, dt);
+    }
+    now += best.dt_s;
+    last = best;
+    last_valid = true;
+
+    Event event;
+    event.time_s = now;
+    event.kind = best.kind;
+    event.ball = best.ball;
+    event.other = best.other;
+    event.index = best.index;
+    BallState& a = balls[best.ball].state;
+    event.before.push_back(a);
+    if (best.kind == EventKind::BallBall) event.before.push_back(balls[best.other].state);
+    switch (best.kind) {
+      case EventKind::StateChange: break;  // advanceWithinState set the next state exactly
+      case EventKind::Pocket: balls[best.ball].pocketed = true; break;
+      case EventKind::Cushion: {
+        const CushionFrame frame(table.cushions[best.index].inward_normal);
+        const physics::BallVelocity local = frame.toLocal(a);
+        if (local.v.y() > 0) {
+          frame.toTable(physics::solveCushionImpactExact(p.cushion, local, p.cushion_solver).after, &a);
+        }
+        break;
+      }
+      case EventKind::BallBall: {
+        BallState& b = balls[best.other].state;
+        Eigen::Vector3d normal(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0);
+        normal.normalize();
+        const physics::BallVelocity va{a.velocity, a.angular_velocity}, vb{b.velocity, b.angular_velocity};
+        if (physics::approachSpeed(va, vb, normal) > 0) {
+          const physics::BallBallImpactResult impact = physics::resolveBallBallImpact(p.ball_ball, va, vb, normal);
+          a.velocity = impact.ball1.v;
+          a.angular_velocity = impact.ball1.w;
+          b.velocity = impact.ball2.v;
+          b.angular_velocity = impact.ball2.w;
+        }
+        break;
+      }
+    }
+    event.after.push_back(a);
+    if (best.kind == EventKind::BallBall) event.after.push_back(balls[best.other].state);
+    result.events.push_back(std::move(event));
+  }
+  result.final_balls = balls;
+  result.end_time_s = now;
+  return result;
+}
+
+}  // namespace baize::engine

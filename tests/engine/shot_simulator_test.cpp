@@ -1,0 +1,227 @@
+#include "engine/shot_simulator.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace baize::engine {
+namespace {
+
+using physics::BallState;
+using ::testing::HasSubstr;
+
+// Closed-form distances and velocities through the whole loop: rounding of a few operations.
+constexpr double kClosedFormRelative = 1e-12;
+// The exact cushion solver's accuracy at its default tolerance, relative to the speed.
+constexpr double kCushionAccuracy = 1e-9;
+// Positions of touching balls and of balls at a cushion are located by polynomial roots: to rounding.
+constexpr double kContactTolerance_m = 1e-9;
+
+BallState ballAt(double x, double y, double vx = 0, double vy = 0) {
+  BallState b;
+  b.position = {x, y};
+  b.velocity = {vx, vy, 0};
+  return b;
+}
+
+double energy(const physics::ClothParams& cloth, const BallState& b) {
+  return physics::specificKineticEnergy(cloth, b);
+}
+
+// A ball struck without spin slides, rolls on at 5/7 of its speed after 12 v^2 / (49 mu_s g), and
+// stops after another (5/7 v)^2 / (2 mu_r g).
+TEST(ShotSimulator, StunShotSlidesRollsAndStopsWhereTheClosedFormSays) {
+  const SimulationParams p = poolSimulationParams();
+  const double v0 = 1.5, g = p.cloth.gravity_mps2;
+  const SimulationResult r = simulate(p, rectangularTable(20, 10), {ballAt(-5, 0, v0, 0)});
+  ASSERT_EQ(r.events.size(), 2u);
+  EXPECT_EQ(r.events[0].kind, EventKind::StateChange);
+  EXPECT_NEAR(r.events[0].after[0].velocity.x(), 5.0 / 7 * v0, kClosedFormRelative * v0);
+  const double sliding = 12 * v0 * v0 / (49 * p.cloth.sliding_friction * g);
+  EXPECT_NEAR(r.events[0].after[0].position.x(), -5 + sliding, kClosedFormRelative * 10);
+  const double v1 = 5.0 / 7 * v0, rolling = v1 * v1 / (2 * p.cloth.rolling_friction * g);
+  EXPECT_NEAR(r.final_balls[0].state.position.x(), -5 + sliding + rolling, kClosedFormRelative * 10);
+  EXPECT_NEAR(r.final_balls[0].state.position.y(), 0, kClosedFormRelative);
+  EXPECT_EQ(r.final_balls[0].state.velocity.norm(), 0);
+}
+
+// A rolling ball meeting a cushion head-on gets exactly what the seed model gives, in that cushion's
+// frame: for the right-hand cushion (inward normal -x) local y is +x and local x is -y, so
+// v_table = (v_y', -v_x') and w_table = (w_y', -w_x', w_z').
+TEST(ShotSimulator, HeadOnCushionHitEqualsTheCushionModelCalledDirectly) {
+  const SimulationParams p = poolSimulationParams();
+  const double R = p.cushion.radius_m;
+  BallState ball = ballAt(0.5, 0, 1.2, 0);
+  ball.angular_velocity = {0, 1.2 / R, 0};  // rolling along +x: v + R z x w = 0
+  const SimulationResult r = simulate(p, rectangularTable(2.0, 1.0), {ball});
+  const auto hit = std::find_if(r.events.begin(), r.events.end(),
+                                [](const Event& e) { return e.kind == EventKind::Cushion; });
+  ASSERT_NE(hit, r.events.end());
+  EXPECT_EQ(hit->index, 1);
+  const BallState& before = hit->before[0];
+  EXPECT_NEAR(before.position.x(), 1.0 - R, kContactTolerance_m);
+  const double V = before.velocity.x();
+  const physics::CushionImpactResult model = physics::solveCushionImpactExact(
+      p.cushion, physics::incomingBall(V, M_PI / 2, V / R, 0), p.cushion_solver);
+  const BallState& after = hit->after[0];
+  EXPECT_NEAR(after.velocity.x(), model.after.v.y(), kCushionAccuracy * V);
+  EXPECT_NEAR(after.velocity.y(), -model.after.v.x(), kCushionAccuracy * V);
+  EXPECT_NEAR(after.angular_velocity.x(), model.after.w.y(), kCushionAccuracy * V / R);
+  EXPECT_NEAR(after.angular_velocity.y(), -model.after.w.x(), kCushionAccuracy * V / R);
+  EXPECT_LT(after.velocity.x(), 0) << "it comes back";
+}
+
+// Two balls: the collision is found at a centre distance of exactly 2R, and a frictionless head-on
+// hit with e = 1 hands the whole velocity over (equal masses).
+TEST(ShotSimulator, HeadOnBallHitHappensAtTouchingDistanceAndExchangesVelocities) {
+  SimulationParams p = poolSimulationParams();
+  p.ball_ball.restitution = 1;
+  p.ball_ball.friction_law = physics::BallBallFrictionLaw::Constant;
+  p.ball_ball.constant_friction = 0;
+  const double R = p.cushion.radius_m;
+  const SimulationResult r = simulate(p, rectangularTable(20, 10), {ballAt(-2, 0, 2, 0), ballAt(0, 0)});
+  const auto hit = std::find_if(r.events.begin(), r.events.end(),
+                                [](const Event& e) { return e.kind == EventKind::BallBall; });
+  ASSERT_NE(hit, r.events.end());
+  EXPECT_NEAR((hit->before[0].position - hit->before[1].position).norm(), 2 * R, kContactTolerance_m);
+  EXPECT_NEAR(hit->after[0].velocity.x(), 0, 1e-12);
+  EXPECT_NEAR(hit->after[1].velocity.x(), hit->before[0].velocity.x(), 1e-12);
+}
+
+// Random scenes of 2-4 balls on a cushioned table: at every event nothing gains energy, touching
+// balls are 2R apart, and every ball ends on the table without overlapping another.
+TEST(ShotSimulator, RandomScenesKeepEnergyFallingAndBallsApartAndOnTheTable) {
+  SimulationParams p = poolSimulationParams();
+  const double R = p.cushion.radius_m, L = 2.54, W = 1.27;
+  const TableGeometry table = rectangularTable(L, W);
+  std::mt19937_64 engine(20261121);
+  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53); };
+  int collisions = 0, cushion_hits = 0;
+  for (int scene = 0; scene < 60; ++scene) {
+    const int n = 2 + scene % 3;
+    std::vector<BallState> balls;
+    while (static_cast<int>(balls.size()) < n) {
+      BallState b = ballAt(uniform(-L / 2 + R, L / 2 - R), uniform(-W / 2 + R, W / 2 - R));
+      bool clear = true;
+      for (const BallState& o : balls) clear = clear && (o.position - b.position).norm() > 2 * R;
+      if (clear) balls.push_back(b);
+    }
+    const double angle = uniform(0, 2 * M_PI), speed = uniform(0.5, 4);
+    balls[0].velocity = {speed * std::cos(angle), speed * std::sin(angle), 0};
+    balls[0].angular_velocity = {uniform(-50, 50), uniform(-50, 50), uniform(-50, 50)};
+    const SimulationResult r = simulate(p, table, balls);
+    for (const Event& e : r.events) {
+      double before = 0, after = 0;
+      for (const BallState& b : e.before) before += energy(p.cloth, b);
+      for (const BallState& b : e.after) after += energy(p.cloth, b);
+      EXPECT_LE(after, before * (1 + 1e-12) + 1e-15) << eventKindName(e.kind) << " at " << e.time_s;
+      if (e.kind == EventKind::BallBall) {
+        ++collisions;
+        EXPECT_NEAR((e.before[0].position - e.before[1].position).norm(), 2 * R, kContactTolerance_m);
+      }
+      if (e.kind == EventKind::Cushion) ++cushion_hits;
+    }
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector2d q = r.final_balls[i].state.position;
+      EXPECT_LE(std::abs(q.x()), L / 2 - R + kContactTolerance_m);
+      EXPECT_LE(std::abs(q.y()), W / 2 - R + kContactTolerance_m);
+      for (int j = 0; j < i; ++j) {
+        EXPECT_GE((q - r.final_balls[j].state.position).norm(), 2 * R - kContactTolerance_m);
+      }
+    }
+  }
+  EXPECT_GT(collisions, 10) << "the set must exercise ball-ball events";
+  EXPECT_GT(cushion_hits, 50) << "the set must exercise cushion events";
+}
+
+// Mirroring the scene in the x axis (y -> -y, w -> (-w_x, w_y, -w_z)) mirrors the outcome.
+TEST(ShotSimulator, MirrorImageScenesGiveMirrorImageResults) {
+  const SimulationParams p = poolSimulationParams();
+  const TableGeometry table = rectangularTable(2.54, 1.27);
+  BallState cue = ballAt(-0.8, 0.1, 2.5, 0.7);
+  cue.angular_velocity = {3, -20, 15};
+  const std::vector<BallState> scene = {cue, ballAt(0.2, 0.25), ballAt(0.5, -0.3)};
+  std::vector<BallState> mirror = scene;
+  for (BallState& b : mirror) {
+    b.position.y() *= -1;
+    b.velocity.y() *= -1;
+    b.angular_velocity.x() *= -1;
+    b.angular_velocity.z() *= -1;
+  }
+  const SimulationResult a = simulate(p, table, scene), b = simulate(p, table, mirror);
+  ASSERT_EQ(a.events.size(), b.events.size());
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    EXPECT_NEAR(a.final_balls[i].state.position.x(), b.final_balls[i].state.position.x(), 1e-9);
+    EXPECT_NEAR(a.final_balls[i].state.position.y(), -b.final_balls[i].state.position.y(), 1e-9);
+  }
+}
+
+TEST(ShotSimulator, SameInputGivesBitIdenticalOutput) {
+  const SimulationParams p = poolSimulationParams();
+  const TableGeometry table = rectangularTable(2.54, 1.27);
+  BallState cue = ballAt(-0.9, -0.2, 3, 1);
+  cue.angular_velocity = {10, -40, 30};
+  const std::vector<BallState> scene = {cue, ballAt(0.3, 0), ballAt(0.3 + 0.0572, 0.0)};
+  const SimulationResult a = simulate(p, table, scene), b = simulate(p, table, scene);
+  ASSERT_EQ(a.events.size(), b.events.size());
+  for (std::size_t i = 0; i < a.events.size(); ++i) EXPECT_EQ(a.events[i].time_s, b.events[i].time_s);
+  for (std::size_t i = 0; i < scene.size(); ++i) {
+    EXPECT_EQ(a.final_balls[i].state.position, b.final_balls[i].state.position);
+  }
+}
+
+// A ball rolling into a pocket's capture circle falls in and stops taking part.
+TEST(ShotSimulator, ABallEnteringACaptureCircleIsPocketed) {
+  const SimulationParams p = poolSimulationParams();
+  TableGeometry table;
+  table.pockets.push_back({{1.0, 0.0}, 0.03});
+  const SimulationResult r = simulate(p, table, {ballAt(0, 0, 2, 0)});
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events.back().kind, EventKind::Pocket);
+  EXPECT_TRUE(r.final_balls[0].pocketed);
+  EXPECT_NEAR(r.events.back().before[0].position.x(), 1.0 - 0.03, kContactTolerance_m);
+}
+
+// Resting balls cost no predictions: the pairs among them are skipped.
+TEST(ShotSimulator, PairsOfRestingBallsAreSkipped) {
+  const SimulationParams p = poolSimulationParams();
+  std::vector<BallState> balls = {ballAt(-1, 0, 0.5, 0)};
+  for (int k = 0; k < 10; ++k) balls.push_back(ballAt(0.2 + 0.07 * k, 0.4));
+  const SimulationResult r = simulate(p, rectangularTable(2.54, 1.27), balls);
+  EXPECT_GE(r.skipped_predictions, 45) << "the 45 resting pairs, at every event";
+}
+
+TEST(ShotSimulator, BadScenesAreRejectedWithTheValue) {
+  const SimulationParams p = poolSimulationParams();
+  const TableGeometry table = rectangularTable(2.54, 1.27);
+  auto message = [&](const std::vector<BallState>& balls) {
+    try {
+      simulate(p, table, balls);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_THAT(message({ballAt(0, 0), ballAt(0.03, 0)}), HasSubstr("ball 1 overlaps ball 0"));
+  EXPECT_THAT(message({ballAt(1.27, 0)}), HasSubstr("beyond cushion"));
+  EXPECT_THAT(message({ballAt(std::nan(""), 0)}), HasSubstr("ball 0"));
+  SimulationParams wrong = p;
+  wrong.cloth.radius_m = 0.03;
+  EXPECT_THROW(simulate(wrong, table, {ballAt(0, 0)}), std::invalid_argument);
+}
+
+TEST(ShotSimulator, AShotThatNeedsTooManyEventsStopsWithAnError) {
+  SimulationParams p = poolSimulationParams();
+  p.max_events = 3;
+  try {
+    simulate(p, rectangularTable(2.54, 1.27), {ballAt(0, 0, 3, 0.5)});
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("max_events = 3"));
+  }
+}
+
+}  // namespace
+}  // namespace baize::engine
