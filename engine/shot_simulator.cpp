@@ -74,6 +74,13 @@ struct CushionFrame {
   }
 };
 
+// Whether the direction from a jaw's centre to point q lies within the jaw's angular range.
+bool onArc(const CushionArc& jaw, const Eigen::Vector2d& q) {
+  double angle = std::atan2(q.y() - jaw.centre.y(), q.x() - jaw.centre.x());
+  while (angle < jaw.start_angle_rad) angle += 2 * M_PI;
+  return angle <= jaw.end_angle_rad;
+}
+
 void validateInput(const SimulationParams& p, const TableGeometry& table, const std::vector<BallState>& balls) {
   physics::validateClothParams(p.cloth);
   physics::validateCushionParams(p.cushion);
@@ -93,6 +100,14 @@ void validateInput(const SimulationParams& p, const TableGeometry& table, const 
       throw std::invalid_argument("cushion segment: it needs a unit inward normal and two distinct ends");
     }
   }
+  for (std::size_t k = 0; k < table.jaws.size(); ++k) {
+    const CushionArc& jaw = table.jaws[k];
+    if (!(jaw.radius_m > 0) || !(jaw.end_angle_rad >= jaw.start_angle_rad) ||
+        !(jaw.end_angle_rad - jaw.start_angle_rad <= 2 * M_PI)) {
+      physics::rejectValue("jaw " + std::to_string(k) + " radius (m)", jaw.radius_m,
+                           "a jaw needs a radius > 0 and an angle range of at most one turn");
+    }
+  }
   for (std::size_t i = 0; i < balls.size(); ++i) {
     const std::string who = "ball " + std::to_string(i);
     try {
@@ -105,6 +120,14 @@ void validateInput(const SimulationParams& p, const TableGeometry& table, const 
       if (gap < -kContactSlack_m) {
         physics::rejectValue(who + " overlaps ball " + std::to_string(j) + ": their gap (m)", gap,
                              "balls may touch but not overlap (gap >= 0)");
+      }
+    }
+    for (std::size_t k = 0; k < table.jaws.size(); ++k) {
+      const CushionArc& jaw = table.jaws[k];
+      const double distance = (balls[i].position - jaw.centre).norm();
+      if (onArc(jaw, balls[i].position) && distance < jaw.radius_m + R - kContactSlack_m) {
+        physics::rejectValue(who + " is inside jaw " + std::to_string(k) + ": its centre's distance from the jaw's centre (m)",
+                             distance, "it must be at least the jaw's radius plus the ball's");
       }
     }
     for (std::size_t k = 0; k < table.cushions.size(); ++k) {
@@ -134,6 +157,16 @@ TableGeometry rectangularTable(double length_m, double width_m) {
   return table;
 }
 
+physics::BallState sampleTrajectory(const physics::ClothParams& cloth, const Trajectory& trajectory, double t_s) {
+  if (trajectory.empty()) throw std::invalid_argument("sampleTrajectory: the trajectory is empty");
+  if (!(t_s >= 0) || !std::isfinite(t_s)) physics::rejectValue("sample time (s)", t_s, "it must be finite and >= 0");
+  auto piece = std::upper_bound(trajectory.begin(), trajectory.end(), t_s,
+                                [](double t, const TrajectoryPiece& q) { return t < q.start_time_s; });
+  --piece;  // the last piece starting at or before t_s (the first starts at 0)
+  if (piece->pocketed) return piece->state;
+  return physics::advance(cloth, piece->state, t_s - piece->start_time_s);
+}
+
 SimulationParams poolSimulationParams() {
   SimulationParams p;
   p.cushion.mass_kg = 0.17;
@@ -148,6 +181,7 @@ const char* eventKindName(EventKind kind) {
     case EventKind::StateChange: return "state change";
     case EventKind::BallBall: return "ball-ball";
     case EventKind::Cushion: return "cushion";
+    case EventKind::Jaw: return "jaw";
     case EventKind::Pocket: return "pocket";
   }
   return "?";
@@ -159,6 +193,10 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   SimulationResult result;
   std::vector<BallRecord> balls(input.size());
   for (std::size_t i = 0; i < input.size(); ++i) balls[i].state = input[i];
+  if (p.record_trajectories) {
+    result.trajectories.resize(input.size());
+    for (std::size_t i = 0; i < input.size(); ++i) result.trajectories[i].push_back({0, input[i], false});
+  }
   double now = 0;
   Candidate last;  // the contact resolved last, not to be found again at the same instant
   bool last_valid = false;
@@ -198,6 +236,16 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         const Eigen::Vector2d along = c.end - c.start;
         const double s = (path[i].at(hit.time) - c.start).dot(along) / along.squaredNorm();
         if (s >= 0 && s <= 1) consider({hit.time, EventKind::Cushion, i, -1, k});
+      }
+      for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
+        const CushionArc& jaw = table.jaws[k];
+        ++result.predictions;
+        const PolynomialCoefficients gap = squaredGap(path[i], jaw.centre, Eigen::Vector2d::Zero(),
+                                                      Eigen::Vector2d::Zero(), jaw.radius_m + R);
+        const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+        if (hit.outcome == physics::RootOutcome::Root && onArc(jaw, path[i].at(hit.time))) {
+          consider({hit.time, EventKind::Jaw, i, -1, k});
+        }
       }
       for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
         const PocketCircle& pocket = table.pockets[k];
@@ -255,8 +303,14 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     switch (best.kind) {
       case EventKind::StateChange: break;  // advanceWithinState set the next state exactly
       case EventKind::Pocket: balls[best.ball].pocketed = true; break;
-      case EventKind::Cushion: {
-        const CushionFrame frame(table.cushions[best.index].inward_normal);
+      case EventKind::Cushion:
+      case EventKind::Jaw: {
+        // The seed model in the frame of the contact normal: a straight cushion's, or the direction
+        // from a jaw's centre to the ball.
+        const Eigen::Vector2d normal = best.kind == EventKind::Cushion
+                                           ? table.cushions[best.index].inward_normal
+                                           : Eigen::Vector2d((a.position - table.jaws[best.index].centre).normalized());
+        const CushionFrame frame(normal);
         const physics::BallVelocity local = frame.toLocal(a);
         if (local.v.y() > 0) {
           frame.toTable(physics::solveCushionImpactExact(p.cushion, local, p.cushion_solver).after, &a);
@@ -280,6 +334,10 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     }
     event.after.push_back(a);
     if (best.kind == EventKind::BallBall) event.after.push_back(balls[best.other].state);
+    if (p.record_trajectories && best.kind != EventKind::StateChange) {  // a state change is in closed form
+      result.trajectories[best.ball].push_back({now, a, balls[best.ball].pocketed});
+      if (best.kind == EventKind::BallBall) result.trajectories[best.other].push_back({now, balls[best.other].state, false});
+    }
     result.events.push_back(std::move(event));
   }
   result.final_balls = balls;

@@ -27,6 +27,18 @@ struct CushionSegment {
   Eigen::Vector2d inward_normal = Eigen::Vector2d::UnitY();
 };
 
+// A rounded cushion (a pocket's jaw tip): a circular arc of the nose line, centre and radius in the
+// table plane, over the directions from the centre between start_angle and end_angle (rad,
+// counter-clockwise from +x; end_angle may exceed pi). A ball touches it when its centre is
+// radius + R from the centre in a direction within that range; the contact normal points from the
+// centre to the ball.
+struct CushionArc {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // m
+  double radius_m = 0;
+  double start_angle_rad = 0;
+  double end_angle_rad = 0;
+};
+
 // A ball whose centre enters this circle has fallen into the pocket.
 struct PocketCircle {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // m
@@ -35,6 +47,7 @@ struct PocketCircle {
 
 struct TableGeometry {
   std::vector<CushionSegment> cushions;
+  std::vector<CushionArc> jaws;
   std::vector<PocketCircle> pockets;
 };
 
@@ -49,6 +62,7 @@ struct SimulationParams {
   physics::ExactSolverOptions cushion_solver;
   physics::BallBallParams ball_ball;
   long max_events = 100000;  // a shot needing more stops with an error saying so
+  bool record_trajectories = false;  // fill SimulationResult::trajectories (costs memory only)
 };
 
 // Pool defaults throughout: 57.15 mm, 0.17 kg balls, the nose at 0.635 of the diameter above the
@@ -58,7 +72,8 @@ SimulationParams poolSimulationParams();
 enum class EventKind {
   StateChange,  // a ball's motion state changed (sliding -> rolling, rolling -> stopped, ...)
   BallBall,     // balls `ball` and `other` collided
-  Cushion,      // `ball` hit cushion number `index`
+  Cushion,      // `ball` hit straight cushion number `index`
+  Jaw,          // `ball` hit jaw (rounded cushion) number `index`
   Pocket,       // `ball` fell into pocket number `index`
 };
 
@@ -79,12 +94,25 @@ struct Event {
   std::vector<physics::BallState> after;   // and just after
 };
 
+// A ball's path as its exact closed-form pieces: from each piece's start time the ball moves as
+// physics::advance says from that state, until the next piece (an event changed its motion).
+struct TrajectoryPiece {
+  double start_time_s = 0;
+  physics::BallState state;  // at start_time_s
+  bool pocketed = false;     // from start_time_s on the ball is in a pocket
+};
+using Trajectory = std::vector<TrajectoryPiece>;
+
+// The ball's state at time t_s >= 0 (its state when it fell for a pocketed ball).
+physics::BallState sampleTrajectory(const physics::ClothParams& cloth, const Trajectory& trajectory, double t_s);
+
 struct SimulationResult {
   std::vector<Event> events;
   std::vector<BallRecord> final_balls;
   double end_time_s = 0;        // when the last ball stopped (or fell)
   long predictions = 0;         // event predictions solved
   long skipped_predictions = 0; // pairs skipped without solving (both balls at rest, far apart)
+  std::vector<Trajectory> trajectories;  // per ball, when SimulationParams::record_trajectories
 };
 
 // Simulates until every ball is at rest or pocketed. Throws std::invalid_argument on invalid input

@@ -193,6 +193,54 @@ TEST(ShotSimulator, PairsOfRestingBallsAreSkipped) {
   EXPECT_GE(r.skipped_predictions, 45) << "the 45 resting pairs, at every event";
 }
 
+// The recorded pieces reproduce every event's state: sampled at an event's time, the trajectory of an
+// involved ball gives its state just after the event (the closed form from the piece's start).
+TEST(ShotSimulator, TrajectoriesSampledAtEventsGiveTheEventStates) {
+  SimulationParams p = poolSimulationParams();
+  p.record_trajectories = true;
+  BallState cue = ballAt(-0.9, -0.2, 3, 1);
+  cue.angular_velocity = {10, -40, 30};
+  const SimulationResult r = simulate(p, rectangularTable(2.54, 1.27), {cue, ballAt(0.3, 0), ballAt(0.5, 0.3)});
+  ASSERT_EQ(r.trajectories.size(), 3u);
+  int checked = 0;
+  for (const Event& e : r.events) {
+    const BallState sampled = sampleTrajectory(p.cloth, r.trajectories[e.ball], e.time_s);
+    EXPECT_NEAR((sampled.position - e.after[0].position).norm(), 0, 1e-9) << eventKindName(e.kind);
+    EXPECT_NEAR((sampled.velocity - e.after[0].velocity).norm(), 0, 1e-9) << eventKindName(e.kind);
+    ++checked;
+  }
+  EXPECT_GT(checked, 5);
+  for (int i = 0; i < 3; ++i) {
+    const BallState end = sampleTrajectory(p.cloth, r.trajectories[i], r.end_time_s + 1);
+    EXPECT_NEAR((end.position - r.final_balls[i].state.position).norm(), 0, 1e-9);
+  }
+  EXPECT_TRUE(simulate(poolSimulationParams(), rectangularTable(2.54, 1.27), {cue}).trajectories.empty())
+      << "nothing recorded unless asked";
+}
+
+// A jaw is a cushion whose normal points from its centre to the ball: a ball rolling straight at a
+// jaw's centre meets it head-on and gets exactly the seed model's head-on result; a ball aimed at
+// the part of the circle outside the jaw's angular range passes through.
+TEST(ShotSimulator, AJawActsAsACushionAlongItsContactNormalWithinItsRange) {
+  const SimulationParams p = poolSimulationParams();
+  const double R = p.cushion.radius_m, rho = 0.01;
+  TableGeometry table;
+  table.jaws.push_back({{1.0, 0.0}, rho, M_PI / 2, 3 * M_PI / 2});  // faces -x
+  BallState ball = ballAt(0, 0, 1.5, 0);
+  ball.angular_velocity = {0, 1.5 / R, 0};  // rolling
+  const SimulationResult r = simulate(p, table, {ball});
+  const auto hit = std::find_if(r.events.begin(), r.events.end(), [](const Event& e) { return e.kind == EventKind::Jaw; });
+  ASSERT_NE(hit, r.events.end());
+  EXPECT_NEAR(hit->before[0].position.x(), 1.0 - rho - R, kContactTolerance_m);
+  const double V = hit->before[0].velocity.x();
+  const physics::CushionImpactResult model =
+      physics::solveCushionImpactExact(p.cushion, physics::incomingBall(V, M_PI / 2, V / R, 0), p.cushion_solver);
+  EXPECT_NEAR(hit->after[0].velocity.x(), model.after.v.y(), kCushionAccuracy * V);
+  TableGeometry back;
+  back.jaws.push_back({{1.0, 0.0}, rho, -M_PI / 2, M_PI / 2});  // faces +x: the ball meets its back
+  for (const Event& e : simulate(p, back, {ball}).events) EXPECT_NE(e.kind, EventKind::Jaw);
+}
+
 TEST(ShotSimulator, BadScenesAreRejectedWithTheValue) {
   const SimulationParams p = poolSimulationParams();
   const TableGeometry table = rectangularTable(2.54, 1.27);
