@@ -201,65 +201,82 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   Candidate last;  // the contact resolved last, not to be found again at the same instant
   bool last_valid = false;
 
+  // Predictions are cached as absolute times and stay valid until one of their balls changes its
+  // motion (an event involving it, or its own state change): only those are solved again.
+  const int n = static_cast<int>(balls.size());
+  std::vector<Candidate> own(n);                        // per ball: state change, cushion, jaw, pocket
+  std::vector<Candidate> pair(static_cast<std::size_t>(n) * n);  // per pair i < j at [i * n + j]
+  std::vector<bool> dirty(n, true);
+  std::vector<double> until(n, kInfinity);  // time from now to each ball's next state change
+  std::vector<physics::PositionQuadratic> path(n);
+
   for (long count = 0;; ++count) {
     if (count == p.max_events) {
       throw std::runtime_error("the shot did not come to rest within max_events = " +
                                std::to_string(p.max_events) + " events (at t = " + physics::valueText(now) + " s)");
     }
-    const int n = static_cast<int>(balls.size());
-    std::vector<double> until(n, kInfinity);  // time to each ball's next state change
-    std::vector<physics::PositionQuadratic> path(n);
     for (int i = 0; i < n; ++i) {
       if (balls[i].pocketed) continue;
       until[i] = physics::timeToStateChange(p.cloth, balls[i].state);
       path[i] = physics::positionQuadratic(p.cloth, balls[i].state);
     }
-    Candidate best;
-    auto consider = [&](const Candidate& c) {
-      if (!(c.dt_s < kInfinity)) return;
-      if (last_valid && c.dt_s == 0 && c.sameContact(last)) return;
-      if (c < best) best = c;
+    // A prediction made now: dt from now, stored as an absolute time (the just-resolved contact is
+    // not found again at the same instant).
+    auto absolute = [&](Candidate c) {
+      if (last_valid && c.dt_s == 0 && c.sameContact(last)) c.dt_s = kInfinity;
+      c.dt_s += now;
+      return c;
     };
     for (int i = 0; i < n; ++i) {
+      if (!dirty[i]) continue;
+      own[i] = Candidate{};
       if (balls[i].pocketed) continue;
-      consider({until[i], EventKind::StateChange, i});
-      if (!moving(p.cloth, balls[i].state)) continue;
-      const double horizon = std::isfinite(until[i]) ? until[i] : 0;
-      for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) {
-        const CushionSegment& c = table.cushions[k];
-        const PolynomialCoefficients gap = {c.inward_normal.dot(path[i].constant_m - c.start) - R,
-                                            c.inward_normal.dot(path[i].linear_mps),
-                                            c.inward_normal.dot(path[i].quadratic_mps2), 0, 0};
-        ++result.predictions;
-        const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
-        if (hit.outcome != physics::RootOutcome::Root) continue;
-        const Eigen::Vector2d along = c.end - c.start;
-        const double s = (path[i].at(hit.time) - c.start).dot(along) / along.squaredNorm();
-        if (s >= 0 && s <= 1) consider({hit.time, EventKind::Cushion, i, -1, k});
-      }
-      for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
-        const CushionArc& jaw = table.jaws[k];
-        ++result.predictions;
-        const PolynomialCoefficients gap = squaredGap(path[i], jaw.centre, Eigen::Vector2d::Zero(),
-                                                      Eigen::Vector2d::Zero(), jaw.radius_m + R);
-        const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
-        if (hit.outcome == physics::RootOutcome::Root && onArc(jaw, path[i].at(hit.time))) {
-          consider({hit.time, EventKind::Jaw, i, -1, k});
+      Candidate best_own{until[i], EventKind::StateChange, i};
+      if (moving(p.cloth, balls[i].state)) {
+        const double horizon = until[i];
+        for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) {
+          const CushionSegment& c = table.cushions[k];
+          const PolynomialCoefficients gap = {c.inward_normal.dot(path[i].constant_m - c.start) - R,
+                                              c.inward_normal.dot(path[i].linear_mps),
+                                              c.inward_normal.dot(path[i].quadratic_mps2), 0, 0};
+          ++result.predictions;
+          const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+          if (hit.outcome != physics::RootOutcome::Root) continue;
+          const Eigen::Vector2d along = c.end - c.start;
+          const double s = (path[i].at(hit.time) - c.start).dot(along) / along.squaredNorm();
+          const Candidate candidate{hit.time, EventKind::Cushion, i, -1, k};
+          if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < best_own) best_own = candidate;
+        }
+        for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
+          const CushionArc& jaw = table.jaws[k];
+          ++result.predictions;
+          const PolynomialCoefficients gap = squaredGap(path[i], jaw.centre, Eigen::Vector2d::Zero(),
+                                                        Eigen::Vector2d::Zero(), jaw.radius_m + R);
+          const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+          const Candidate candidate{hit.time, EventKind::Jaw, i, -1, k};
+          if (hit.outcome == physics::RootOutcome::Root && onArc(jaw, path[i].at(hit.time)) &&
+              absolute(candidate).dt_s < kInfinity && candidate < best_own) {
+            best_own = candidate;
+          }
+        }
+        for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
+          const PocketCircle& pocket = table.pockets[k];
+          ++result.predictions;
+          const PolynomialCoefficients gap =
+              squaredGap(path[i], pocket.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), pocket.radius_m);
+          const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+          const Candidate candidate{hit.time, EventKind::Pocket, i, -1, k};
+          if (hit.outcome == physics::RootOutcome::Root && candidate < best_own) best_own = candidate;
         }
       }
-      for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
-        const PocketCircle& pocket = table.pockets[k];
-        ++result.predictions;
-        const PolynomialCoefficients gap =
-            squaredGap(path[i], pocket.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), pocket.radius_m);
-        const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
-        if (hit.outcome == physics::RootOutcome::Root) consider({hit.time, EventKind::Pocket, i, -1, k});
-      }
+      own[i] = absolute(best_own);
     }
     for (int i = 0; i < n; ++i) {
-      if (balls[i].pocketed) continue;
       for (int j = i + 1; j < n; ++j) {
-        if (balls[j].pocketed) continue;
+        if (!dirty[i] && !dirty[j]) continue;
+        Candidate& cached = pair[static_cast<std::size_t>(i) * n + j];
+        cached = Candidate{};
+        if (balls[i].pocketed || balls[j].pocketed) continue;
         const bool i_moves = moving(p.cloth, balls[i].state), j_moves = moving(p.cloth, balls[j].state);
         if (!i_moves && !j_moves) {
           ++result.skipped_predictions;
@@ -276,16 +293,26 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         const PolynomialCoefficients gap =
             squaredGap(path[i], path[j].constant_m, path[j].linear_mps, path[j].quadratic_mps2, 2 * R);
         const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
-        if (hit.outcome == physics::RootOutcome::Root) consider({hit.time, EventKind::BallBall, i, j});
+        if (hit.outcome == physics::RootOutcome::Root) cached = absolute({hit.time, EventKind::BallBall, i, j});
       }
     }
+    std::fill(dirty.begin(), dirty.end(), false);
+    Candidate best;
+    for (const Candidate& c : own) if (c.dt_s < kInfinity && c < best) best = c;
+    for (const Candidate& c : pair) if (c.dt_s < kInfinity && c < best) best = c;
     if (!(best.dt_s < kInfinity)) break;  // every ball at rest or pocketed
+    best.dt_s -= now;                     // back to time from now
+    if (best.dt_s < 0) best.dt_s = 0;     // rounding of the absolute time
+    // A state change happens exactly at the ball's transition time, where advanceWithinState sets
+    // the next state exactly (the absolute time round trip may have moved it by a rounding).
+    if (best.kind == EventKind::StateChange) best.dt_s = until[best.ball];
 
     // Move every ball to the event's instant.
     for (int i = 0; i < n; ++i) {
       if (balls[i].pocketed) continue;
       const double dt = std::min(best.dt_s, until[i]);
       if (dt > 0) balls[i].state = physics::advanceWithinState(p.cloth, balls[i].state, dt);
+      if (dt == until[i]) dirty[i] = true;  // its motion changed on the way: predict it again
     }
     now += best.dt_s;
     last = best;
@@ -334,6 +361,8 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     }
     event.after.push_back(a);
     if (best.kind == EventKind::BallBall) event.after.push_back(balls[best.other].state);
+    dirty[best.ball] = true;
+    if (best.kind == EventKind::BallBall) dirty[best.other] = true;
     if (p.record_trajectories && best.kind != EventKind::StateChange) {  // a state change is in closed form
       result.trajectories[best.ball].push_back({now, a, balls[best.ball].pocketed});
       if (best.kind == EventKind::BallBall) result.trajectories[best.other].push_back({now, balls[best.other].state, false});
