@@ -42,13 +42,15 @@ bool moving(const physics::ClothParams& cloth, const BallState& ball) {
 }
 
 // |c + l t + q t^2 - centre|^2 - distance^2 as coefficients in t.
-PolynomialCoefficients squaredGap(const physics::PositionQuadratic& path, const Eigen::Vector2d& centre,
-                                  const Eigen::Vector2d& linear_other, const Eigen::Vector2d& quadratic_other,
-                                  double distance) {
+PolynomialCoefficients squaredGap(const physics::PositionQuadratic& path,
+                                  const Eigen::Vector2d& centre,
+                                  const Eigen::Vector2d& linear_other,
+                                  const Eigen::Vector2d& quadratic_other, double distance) {
   const Eigen::Vector2d c = path.constant_m - centre;
   const Eigen::Vector2d l = path.linear_mps - linear_other;
   const Eigen::Vector2d q = path.quadratic_mps2 - quadratic_other;
-  return {c.dot(c) - distance * distance, 2 * c.dot(l), l.dot(l) + 2 * c.dot(q), 2 * l.dot(q), q.dot(q)};
+  return {c.dot(c) - distance * distance, 2 * c.dot(l), l.dot(l) + 2 * c.dot(q), 2 * l.dot(q),
+          q.dot(q)};
 }
 
 // Furthest a ball can travel within dt along its current path, m (a bound, for skipping pairs).
@@ -64,7 +66,8 @@ struct CushionFrame {
   physics::BallVelocity toLocal(const BallState& ball) const {
     physics::BallVelocity local;
     local.v = {ball.velocity.dot(x), ball.velocity.dot(y), 0};
-    local.w = {ball.angular_velocity.dot(x), ball.angular_velocity.dot(y), ball.angular_velocity.z()};
+    local.w = {ball.angular_velocity.dot(x), ball.angular_velocity.dot(y),
+               ball.angular_velocity.z()};
     return local;
   }
   void toTable(const physics::BallVelocity& local, BallState* ball) const {
@@ -81,7 +84,8 @@ bool onArc(const CushionArc& jaw, const Eigen::Vector2d& q) {
   return angle <= jaw.end_angle_rad;
 }
 
-void validateInput(const SimulationParams& p, const TableGeometry& table, const std::vector<BallState>& balls) {
+void validateInput(const SimulationParams& p, const TableGeometry& table,
+                   const std::vector<BallState>& balls) {
   physics::validateClothParams(p.cloth);
   physics::validateCushionParams(p.cushion);
   physics::validateBallBallParams(p.ball_ball);
@@ -91,13 +95,16 @@ void validateInput(const SimulationParams& p, const TableGeometry& table, const 
                          "it must equal the cushion parameters' radius " + physics::valueText(R));
   }
   if (p.ball_ball.mass1_kg != p.cushion.mass_kg || p.ball_ball.mass2_kg != p.cushion.mass_kg) {
-    physics::rejectValue("ball mass of the ball-ball parameters (kg)", p.ball_ball.mass1_kg,
-                         "it must equal the cushion parameters' mass " + physics::valueText(p.cushion.mass_kg));
+    physics::rejectValue(
+        "ball mass of the ball-ball parameters (kg)", p.ball_ball.mass1_kg,
+        "it must equal the cushion parameters' mass " + physics::valueText(p.cushion.mass_kg));
   }
-  if (!(p.max_events > 0)) physics::rejectValue("max_events", static_cast<double>(p.max_events), "it must be > 0");
+  if (!(p.max_events > 0))
+    physics::rejectValue("max_events", static_cast<double>(p.max_events), "it must be > 0");
   for (const CushionSegment& c : table.cushions) {
     if (!(std::abs(c.inward_normal.norm() - 1) < 1e-9) || !((c.end - c.start).norm() > 0)) {
-      throw std::invalid_argument("cushion segment: it needs a unit inward normal and two distinct ends");
+      throw std::invalid_argument(
+          "cushion segment: it needs a unit inward normal and two distinct ends");
     }
   }
   for (std::size_t k = 0; k < table.jaws.size(); ++k) {
@@ -126,7 +133,8 @@ void validateInput(const SimulationParams& p, const TableGeometry& table, const 
       const CushionArc& jaw = table.jaws[k];
       const double distance = (balls[i].position - jaw.centre).norm();
       if (onArc(jaw, balls[i].position) && distance < jaw.radius_m + R - kContactSlack_m) {
-        physics::rejectValue(who + " is inside jaw " + std::to_string(k) + ": its centre's distance from the jaw's centre (m)",
+        physics::rejectValue(who + " is inside jaw " + std::to_string(k) +
+                                 ": its centre's distance from the jaw's centre (m)",
                              distance, "it must be at least the jaw's radius plus the ball's");
       }
     }
@@ -136,8 +144,9 @@ void validateInput(const SimulationParams& p, const TableGeometry& table, const 
       const double s = (balls[i].position - c.start).dot(along) / along.squaredNorm();
       const double distance = c.inward_normal.dot(balls[i].position - c.start);
       if (s >= 0 && s <= 1 && distance < R - kContactSlack_m) {
-        physics::rejectValue(who + " is beyond cushion " + std::to_string(k) + ": its centre's distance from it (m)",
-                             distance, "it must be at least the radius " + physics::valueText(R));
+        physics::rejectValue(
+            who + " is beyond cushion " + std::to_string(k) + ": its centre's distance from it (m)",
+            distance, "it must be at least the radius " + physics::valueText(R));
       }
     }
   }
@@ -146,8 +155,10 @@ void validateInput(const SimulationParams& p, const TableGeometry& table, const 
 }  // namespace
 
 TableGeometry rectangularTable(double length_m, double width_m) {
-  if (!(length_m > 0 && std::isfinite(length_m))) physics::rejectValue("table length (m)", length_m, "it must be > 0");
-  if (!(width_m > 0 && std::isfinite(width_m))) physics::rejectValue("table width (m)", width_m, "it must be > 0");
+  if (!(length_m > 0 && std::isfinite(length_m)))
+    physics::rejectValue("table length (m)", length_m, "it must be > 0");
+  if (!(width_m > 0 && std::isfinite(width_m)))
+    physics::rejectValue("table width (m)", width_m, "it must be > 0");
   const double x = length_m / 2, y = width_m / 2;
   TableGeometry table;
   table.cushions = {{{-x, -y}, {x, -y}, {0, 1}},
@@ -157,11 +168,14 @@ TableGeometry rectangularTable(double length_m, double width_m) {
   return table;
 }
 
-physics::BallState sampleTrajectory(const physics::ClothParams& cloth, const Trajectory& trajectory, double t_s) {
+physics::BallState sampleTrajectory(const physics::ClothParams& cloth, const Trajectory& trajectory,
+                                    double t_s) {
   if (trajectory.empty()) throw std::invalid_argument("sampleTrajectory: the trajectory is empty");
-  if (!(t_s >= 0) || !std::isfinite(t_s)) physics::rejectValue("sample time (s)", t_s, "it must be finite and >= 0");
-  auto piece = std::upper_bound(trajectory.begin(), trajectory.end(), t_s,
-                                [](double t, const TrajectoryPiece& q) { return t < q.start_time_s; });
+  if (!(t_s >= 0) || !std::isfinite(t_s))
+    physics::rejectValue("sample time (s)", t_s, "it must be finite and >= 0");
+  auto piece =
+      std::upper_bound(trajectory.begin(), trajectory.end(), t_s,
+                       [](double t, const TrajectoryPiece& q) { return t < q.start_time_s; });
   --piece;  // the last piece starting at or before t_s (the first starts at 0)
   if (piece->pocketed) return piece->state;
   return physics::advance(cloth, piece->state, t_s - piece->start_time_s);
@@ -178,16 +192,22 @@ SimulationParams poolSimulationParams() {
 
 const char* eventKindName(EventKind kind) {
   switch (kind) {
-    case EventKind::StateChange: return "state change";
-    case EventKind::BallBall: return "ball-ball";
-    case EventKind::Cushion: return "cushion";
-    case EventKind::Jaw: return "jaw";
-    case EventKind::Pocket: return "pocket";
+    case EventKind::StateChange:
+      return "state change";
+    case EventKind::BallBall:
+      return "ball-ball";
+    case EventKind::Cushion:
+      return "cushion";
+    case EventKind::Jaw:
+      return "jaw";
+    case EventKind::Pocket:
+      return "pocket";
   }
   return "?";
 }
 
-SimulationResult simulate(const SimulationParams& p, const TableGeometry& table, const std::vector<BallState>& input) {
+SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
+                          const std::vector<BallState>& input) {
   validateInput(p, table, input);
   const double R = p.cushion.radius_m;
   SimulationResult result;
@@ -195,7 +215,8 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   for (std::size_t i = 0; i < input.size(); ++i) balls[i].state = input[i];
   if (p.record_trajectories) {
     result.trajectories.resize(input.size());
-    for (std::size_t i = 0; i < input.size(); ++i) result.trajectories[i].push_back({0, input[i], false});
+    for (std::size_t i = 0; i < input.size(); ++i)
+      result.trajectories[i].push_back({0, input[i], false});
   }
   double now = 0;
   Candidate last;  // the contact resolved last, not to be found again at the same instant
@@ -204,7 +225,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   // Predictions are cached as absolute times and stay valid until one of their balls changes its
   // motion (an event involving it, or its own state change): only those are solved again.
   const int n = static_cast<int>(balls.size());
-  std::vector<Candidate> own(n);                        // per ball: state change, cushion, jaw, pocket
+  std::vector<Candidate> own(n);  // per ball: state change, cushion, jaw, pocket
   std::vector<Candidate> pair(static_cast<std::size_t>(n) * n);  // per pair i < j at [i * n + j]
   std::vector<bool> dirty(n, true);
   std::vector<double> until(n, kInfinity);  // time from now to each ball's next state change
@@ -212,8 +233,9 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
 
   for (long count = 0;; ++count) {
     if (count == p.max_events) {
-      throw std::runtime_error("the shot did not come to rest within max_events = " +
-                               std::to_string(p.max_events) + " events (at t = " + physics::valueText(now) + " s)");
+      throw std::runtime_error(
+          "the shot did not come to rest within max_events = " + std::to_string(p.max_events) +
+          " events (at t = " + physics::valueText(now) + " s)");
     }
     for (int i = 0; i < n; ++i) {
       if (balls[i].pocketed) continue;
@@ -245,13 +267,15 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           const Eigen::Vector2d along = c.end - c.start;
           const double s = (path[i].at(hit.time) - c.start).dot(along) / along.squaredNorm();
           const Candidate candidate{hit.time, EventKind::Cushion, i, -1, k};
-          if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < best_own) best_own = candidate;
+          if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < best_own)
+            best_own = candidate;
         }
         for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
           const CushionArc& jaw = table.jaws[k];
           ++result.predictions;
-          const PolynomialCoefficients gap = squaredGap(path[i], jaw.centre, Eigen::Vector2d::Zero(),
-                                                        Eigen::Vector2d::Zero(), jaw.radius_m + R);
+          const PolynomialCoefficients gap =
+              squaredGap(path[i], jaw.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                         jaw.radius_m + R);
           const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
           const Candidate candidate{hit.time, EventKind::Jaw, i, -1, k};
           if (hit.outcome == physics::RootOutcome::Root && onArc(jaw, path[i].at(hit.time)) &&
@@ -263,10 +287,12 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           const PocketCircle& pocket = table.pockets[k];
           ++result.predictions;
           const PolynomialCoefficients gap =
-              squaredGap(path[i], pocket.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), pocket.radius_m);
+              squaredGap(path[i], pocket.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                         pocket.radius_m);
           const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
           const Candidate candidate{hit.time, EventKind::Pocket, i, -1, k};
-          if (hit.outcome == physics::RootOutcome::Root && candidate < best_own) best_own = candidate;
+          if (hit.outcome == physics::RootOutcome::Root && candidate < best_own)
+            best_own = candidate;
         }
       }
       own[i] = absolute(best_own);
@@ -277,12 +303,14 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         Candidate& cached = pair[static_cast<std::size_t>(i) * n + j];
         cached = Candidate{};
         if (balls[i].pocketed || balls[j].pocketed) continue;
-        const bool i_moves = moving(p.cloth, balls[i].state), j_moves = moving(p.cloth, balls[j].state);
+        const bool i_moves = moving(p.cloth, balls[i].state),
+                   j_moves = moving(p.cloth, balls[j].state);
         if (!i_moves && !j_moves) {
           ++result.skipped_predictions;
           continue;
         }
-        const double horizon = std::min(i_moves ? until[i] : kInfinity, j_moves ? until[j] : kInfinity);
+        const double horizon =
+            std::min(i_moves ? until[i] : kInfinity, j_moves ? until[j] : kInfinity);
         // Cheap bound first: too far apart to meet before either changes state.
         const double apart = (balls[i].state.position - balls[j].state.position).norm() - 2 * R;
         if (apart > reach(path[i], horizon) + reach(path[j], horizon)) {
@@ -290,16 +318,19 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           continue;
         }
         ++result.predictions;
-        const PolynomialCoefficients gap =
-            squaredGap(path[i], path[j].constant_m, path[j].linear_mps, path[j].quadratic_mps2, 2 * R);
+        const PolynomialCoefficients gap = squaredGap(
+            path[i], path[j].constant_m, path[j].linear_mps, path[j].quadratic_mps2, 2 * R);
         const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
-        if (hit.outcome == physics::RootOutcome::Root) cached = absolute({hit.time, EventKind::BallBall, i, j});
+        if (hit.outcome == physics::RootOutcome::Root)
+          cached = absolute({hit.time, EventKind::BallBall, i, j});
       }
     }
     std::fill(dirty.begin(), dirty.end(), false);
     Candidate best;
-    for (const Candidate& c : own) if (c.dt_s < kInfinity && c < best) best = c;
-    for (const Candidate& c : pair) if (c.dt_s < kInfinity && c < best) best = c;
+    for (const Candidate& c : own)
+      if (c.dt_s < kInfinity && c < best) best = c;
+    for (const Candidate& c : pair)
+      if (c.dt_s < kInfinity && c < best) best = c;
     if (!(best.dt_s < kInfinity)) break;  // every ball at rest or pocketed
     best.dt_s -= now;                     // back to time from now
     if (best.dt_s < 0) best.dt_s = 0;     // rounding of the absolute time
@@ -328,19 +359,24 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     event.before.push_back(a);
     if (best.kind == EventKind::BallBall) event.before.push_back(balls[best.other].state);
     switch (best.kind) {
-      case EventKind::StateChange: break;  // advanceWithinState set the next state exactly
-      case EventKind::Pocket: balls[best.ball].pocketed = true; break;
+      case EventKind::StateChange:
+        break;  // advanceWithinState set the next state exactly
+      case EventKind::Pocket:
+        balls[best.ball].pocketed = true;
+        break;
       case EventKind::Cushion:
       case EventKind::Jaw: {
         // The seed model in the frame of the contact normal: a straight cushion's, or the direction
         // from a jaw's centre to the ball.
-        const Eigen::Vector2d normal = best.kind == EventKind::Cushion
-                                           ? table.cushions[best.index].inward_normal
-                                           : Eigen::Vector2d((a.position - table.jaws[best.index].centre).normalized());
+        const Eigen::Vector2d normal =
+            best.kind == EventKind::Cushion
+                ? table.cushions[best.index].inward_normal
+                : Eigen::Vector2d((a.position - table.jaws[best.index].centre).normalized());
         const CushionFrame frame(normal);
         const physics::BallVelocity local = frame.toLocal(a);
         if (local.v.y() > 0) {
-          frame.toTable(physics::solveCushionImpactExact(p.cushion, local, p.cushion_solver).after, &a);
+          frame.toTable(physics::solveCushionImpactExact(p.cushion, local, p.cushion_solver).after,
+                        &a);
         }
         break;
       }
@@ -348,9 +384,11 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         BallState& b = balls[best.other].state;
         Eigen::Vector3d normal(b.position.x() - a.position.x(), b.position.y() - a.position.y(), 0);
         normal.normalize();
-        const physics::BallVelocity va{a.velocity, a.angular_velocity}, vb{b.velocity, b.angular_velocity};
+        const physics::BallVelocity va{a.velocity, a.angular_velocity},
+            vb{b.velocity, b.angular_velocity};
         if (physics::approachSpeed(va, vb, normal) > 0) {
-          const physics::BallBallImpactResult impact = physics::resolveBallBallImpact(p.ball_ball, va, vb, normal);
+          const physics::BallBallImpactResult impact =
+              physics::resolveBallBallImpact(p.ball_ball, va, vb, normal);
           a.velocity = impact.ball1.v;
           a.angular_velocity = impact.ball1.w;
           b.velocity = impact.ball2.v;
@@ -363,9 +401,11 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     if (best.kind == EventKind::BallBall) event.after.push_back(balls[best.other].state);
     dirty[best.ball] = true;
     if (best.kind == EventKind::BallBall) dirty[best.other] = true;
-    if (p.record_trajectories && best.kind != EventKind::StateChange) {  // a state change is in closed form
+    if (p.record_trajectories &&
+        best.kind != EventKind::StateChange) {  // a state change is in closed form
       result.trajectories[best.ball].push_back({now, a, balls[best.ball].pocketed});
-      if (best.kind == EventKind::BallBall) result.trajectories[best.other].push_back({now, balls[best.other].state, false});
+      if (best.kind == EventKind::BallBall)
+        result.trajectories[best.other].push_back({now, balls[best.other].state, false});
     }
     result.events.push_back(std::move(event));
   }

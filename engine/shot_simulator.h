@@ -1,7 +1,7 @@
 // The event loop: balls move in closed form on the cloth between events, and every event happens at
-// an exact root of the polynomial that describes it (a quartic for two balls or a ball and a pocket's
-// capture circle, a quadratic for a ball and a straight cushion). The earliest event is resolved by
-// the physical model for it and the rest are predicted again.
+// an exact root of the polynomial that describes it (a quartic for two balls or a ball and a
+// pocket's capture circle, a quadratic for a ball and a straight cushion). The earliest event is
+// resolved by the physical model for it and the rest are predicted again.
 //
 // Table frame: origin anywhere on the slate, x and y in the table plane, z up; SI units.
 #pragma once
@@ -61,7 +61,7 @@ struct SimulationParams {
   physics::CushionParams cushion;  // the seed model; mass, radius and nose height of the balls
   physics::ExactSolverOptions cushion_solver;
   physics::BallBallParams ball_ball;
-  long max_events = 100000;  // a shot needing more stops with an error saying so
+  long max_events = 100000;          // a shot needing more stops with an error saying so
   bool record_trajectories = false;  // fill SimulationResult::trajectories (costs memory only)
 };
 
@@ -88,8 +88,8 @@ struct Event {
   double time_s = 0;
   EventKind kind = EventKind::StateChange;
   int ball = 0;
-  int other = -1;  // BallBall: the second ball
-  int index = -1;  // Cushion: the cushion; Pocket: the pocket
+  int other = -1;                          // BallBall: the second ball
+  int index = -1;                          // Cushion: the cushion; Pocket: the pocket
   std::vector<physics::BallState> before;  // the balls involved, just before (ball, then other)
   std::vector<physics::BallState> after;   // and just after
 };
@@ -104,14 +104,15 @@ struct TrajectoryPiece {
 using Trajectory = std::vector<TrajectoryPiece>;
 
 // The ball's state at time t_s >= 0 (its state when it fell for a pocketed ball).
-physics::BallState sampleTrajectory(const physics::ClothParams& cloth, const Trajectory& trajectory, double t_s);
+physics::BallState sampleTrajectory(const physics::ClothParams& cloth, const Trajectory& trajectory,
+                                    double t_s);
 
 struct SimulationResult {
   std::vector<Event> events;
   std::vector<BallRecord> final_balls;
-  double end_time_s = 0;        // when the last ball stopped (or fell)
-  long predictions = 0;         // event predictions solved
-  long skipped_predictions = 0; // pairs skipped without solving (both balls at rest, far apart)
+  double end_time_s = 0;         // when the last ball stopped (or fell)
+  long predictions = 0;          // event predictions solved
+  long skipped_predictions = 0;  // pairs skipped without solving (both balls at rest, far apart)
   std::vector<Trajectory> trajectories;  // per ball, when SimulationParams::record_trajectories
 };
 

@@ -1,7 +1,5 @@
 #include "physics/ball_ball_impact.h"
 
-#include "physics/value_text.h"
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -9,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "physics/value_text.h"
 
 // Derivations (both models).
 //
@@ -27,23 +27,25 @@
 //
 // FrictionalInelastic. Newton's law g_n' = -e g_n gives the normal impulse P = mu* (1 + e) g_n.
 // The friction impulse opposes the slip g_s = (g_t, g_z): J_s = -lambda g_s / |g_s| with
-// lambda = min(mu P, (2/7) mu* |g_s|); the cap is the impulse that brings the free-body slip to zero.
-// Kinetic energy changes by J . (g_before + g_after) / 2 summed over the contact, which is
+// lambda = min(mu P, (2/7) mu* |g_s|); the cap is the impulse that brings the free-body slip to
+// zero. Kinetic energy changes by J . (g_before + g_after) / 2 summed over the contact, which is
 // -(1 - e^2) mu* g_n^2 / 2 - lambda (|g_s| + |g_s'|) / 2 <= 0, and removing v_z afterwards can only
 // lower it further. The balls are treated as free during the impulse (as in Alciatore's analysis);
-// afterwards the vertical part of the friction impulse has changed w_t of both balls and its vertical
-// velocity is removed, so the vertical slip left equals the removed v_z difference, O(mu) small.
+// afterwards the vertical part of the friction impulse has changed w_t of both balls and its
+// vertical velocity is removed, so the vertical slip left equals the removed v_z difference, O(mu)
+// small.
 //
 // Mathavan2014. P is the normal impulse at the ball-ball contact; it only grows. Per unit dP:
 //   on ball 1: -n (normal) + f (friction, f = -mu_b (0, g_t, g_z) / |g_s| while slipping),
-//   on ball 2: +n - f, plus at each ball's cloth contact C = -R z a normal N_i z and a friction T_i.
+//   on ball 2: +n - f, plus at each ball's cloth contact C = -R z a normal N_i z and a friction
+//   T_i.
 // Vertical momentum. Weight gives no impulse in the instantaneous limit and the ball-ball normal is
 // horizontal, so the only vertical impulse the impact makes is the friction's f_z: down on ball 1
 // when f_z < 0, down on ball 2 when f_z > 0. The table can only push, so it answers with
 // N1 = max(0, -f_z), N2 = max(0, f_z); the other ball is pushed up by |f_z| and, in this model that
 // keeps both balls on the table, its vertical velocity is dropped (reported, not applied). Without
-// spin about t (g_z = 0) the table takes no impulse at all and the cloth plays no part. Cloth slip of
-// ball i: s_i = v_i + w_i x (-R z) = (v_n - R w_t, v_t + R w_n); T_i = -mu_s N_i s_i / |s_i|.
+// spin about t (g_z = 0) the table takes no impulse at all and the cloth plays no part. Cloth slip
+// of ball i: s_i = v_i + w_i x (-R z) = (v_n - R w_t, v_t + R w_n); T_i = -mu_s N_i s_i / |s_i|.
 // Rates (m dv/dP in (n, t); I dw/dP in (n, t, z)); z x T = (-T_t, T_n, 0), n x f = (0, -f_z, f_t):
 //   m1 dv1/dP = (-1 + T1n, f_t + T1t),   I1 dw1/dP = R (T1t, -f_z - T1n, f_t),
 //   m2 dv2/dP = (+1 + T2n, -f_t + T2t),  I2 dw2/dP = R (T2t, -f_z - T2n, f_t).
@@ -52,26 +54,28 @@
 // (v_z is held, so f_z acts through the spins only: 5/2, not 7/2).
 // Stick at the ball-ball contact: with g_s = 0 and friction f, N and T are linear in |f_z| and the
 // stick condition dg_s/dP = 0 reads (7/2) f_t / mu* = -(T terms), (5/2 / mu* - O(mu_s)) f_z = 0, so
-// f_z = 0, hence N = T = 0, hence f_t = 0: once the slip vanishes the contact rolls with no friction
-// for the rest of the impact, and no slipping solution can leave g_s = 0 (friction opposing a new
-// slip direction d gives dg_s/dP . d < 0). The integrator therefore switches friction off for good
-// when |g_s| falls below a floor far under the integration error.
-// The cloth contact cannot stick during the impact: with f = 0 the driving rate of s_i has a normal
-// part |(+-1 + (5/2) f_z)| / m_i >= (1 - 5/2 mu_b) / m_i, while cloth friction changes s_i at most by
-// (7/2) mu_s mu_b / m_i; validation requires mu_b (5/2 + 7/2 mu_s) < 1. A loaded cloth slip can pass
-// through zero; at zero the friction points against the driving rate, the way the slip is about to go.
-// Normal approach: dg_n/dP = -1/mu* + T1n/m1 - T2n/m2 <= -(1 - mu_s mu_b) / mu* < 0, so compression
-// ends (g_n = 0) at a finite P. Energetic restitution: W(P) = integral g_n dP grows to W_c during
-// compression and the impact ends when W = (1 - e^2) W_c. Frictionless it gives g_n' = -e g_n exactly.
-// Kinetic energy: friction dissipates (f . g_s <= 0, T_i . s_i <= 0), the held vertical velocity does
-// no work, and the normal force returns e^2 of what it absorbed, so energy never grows.
+// f_z = 0, hence N = T = 0, hence f_t = 0: once the slip vanishes the contact rolls with no
+// friction for the rest of the impact, and no slipping solution can leave g_s = 0 (friction
+// opposing a new slip direction d gives dg_s/dP . d < 0). The integrator therefore switches
+// friction off for good when |g_s| falls below a floor far under the integration error. The cloth
+// contact cannot stick during the impact: with f = 0 the driving rate of s_i has a normal part
+// |(+-1 + (5/2) f_z)| / m_i >= (1 - 5/2 mu_b) / m_i, while cloth friction changes s_i at most by
+// (7/2) mu_s mu_b / m_i; validation requires mu_b (5/2 + 7/2 mu_s) < 1. A loaded cloth slip can
+// pass through zero; at zero the friction points against the driving rate, the way the slip is
+// about to go. Normal approach: dg_n/dP = -1/mu* + T1n/m1 - T2n/m2 <= -(1 - mu_s mu_b) / mu* < 0,
+// so compression ends (g_n = 0) at a finite P. Energetic restitution: W(P) = integral g_n dP grows
+// to W_c during compression and the impact ends when W = (1 - e^2) W_c. Frictionless it gives g_n'
+// = -e g_n exactly. Kinetic energy: friction dissipates (f . g_s <= 0, T_i . s_i <= 0), the held
+// vertical velocity does no work, and the normal force returns e^2 of what it absorbed, so energy
+// never grows.
 //
-// Integration. Adaptive Dormand-Prince 5(4) in P with error control relative to the speed scale; the
-// end of compression and of restitution are located to 1e-12 of their scales by the Illinois method
-// on the length of the last step (each trial is one full RK step from the step's start). The steps
-// are also shortened so that a decreasing slip (ball-ball, or a loaded cloth contact) is approached
-// by at most 90 % of its predicted distance per step, so the non-smooth points are reached, not
-// jumped over. The RHS is smooth between those points, so the result converges at the tolerance.
+// Integration. Adaptive Dormand-Prince 5(4) in P with error control relative to the speed scale;
+// the end of compression and of restitution are located to 1e-12 of their scales by the Illinois
+// method on the length of the last step (each trial is one full RK step from the step's start). The
+// steps are also shortened so that a decreasing slip (ball-ball, or a loaded cloth contact) is
+// approached by at most 90 % of its predicted distance per step, so the non-smooth points are
+// reached, not jumped over. The RHS is smooth between those points, so the result converges at the
+// tolerance.
 
 namespace baize::physics {
 namespace {
@@ -100,12 +104,23 @@ Frame frameOf(const Eigen::Vector3d& line_of_centres) {
 
 // State of the Mathavan integration in the local frame (n, t, z), plus accumulated impulses.
 enum Index : int {
-  kV1n, kV1t, kW1n, kW1t, kW1z,
-  kV2n, kV2t, kW2n, kW2t, kW2z,
-  kWork,                 // W, J: work of the normal force at the ball-ball contact
-  kTable1, kTable2,      // table normal impulses, N s
-  kLift1, kLift2,        // upward friction impulses not answered by the table (dropped), N s
-  kFrictionT, kFrictionZ,  // friction impulse on ball 1 at the ball-ball contact, N s
+  kV1n,
+  kV1t,
+  kW1n,
+  kW1t,
+  kW1z,
+  kV2n,
+  kV2t,
+  kW2n,
+  kW2t,
+  kW2z,
+  kWork,  // W, J: work of the normal force at the ball-ball contact
+  kTable1,
+  kTable2,  // table normal impulses, N s
+  kLift1,
+  kLift2,  // upward friction impulses not answered by the table (dropped), N s
+  kFrictionT,
+  kFrictionZ,  // friction impulse on ball 1 at the ball-ball contact, N s
   kStateSize
 };
 using State = std::array<double, kStateSize>;
@@ -115,7 +130,9 @@ struct Model {
   double slip_floor_mps;
 };
 
-double slipT(const Model& m, const State& y) { return y[kV1t] - y[kV2t] + m.R * (y[kW1z] + y[kW2z]); }
+double slipT(const Model& m, const State& y) {
+  return y[kV1t] - y[kV2t] + m.R * (y[kW1z] + y[kW2z]);
+}
 double slipZ(const Model& m, const State& y) { return -m.R * (y[kW1t] + y[kW2t]); }
 
 // Direction of the cloth friction's opposite: the slip's, or at zero slip the way it is driven.
@@ -218,8 +235,8 @@ struct Integrator {
     eval(out, rolling, k7);
     error = 0;
     for (int i = 0; i < kStateSize; ++i) {
-      const double e = h * (e1 * k1[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] +
-                            e7 * k7[i]);
+      const double e =
+          h * (e1 * k1[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] + e7 * k7[i]);
       error = std::max(error, std::abs(e) / scale[i]);
     }
     error /= tolerance;
@@ -379,7 +396,8 @@ MathavanOutcome integrateEuler(const Model& m, const State& y0, double restituti
   if (rolling) out.rolling_from = 0.0;
   const long max_increments = 1000L * steps;
   for (long n = 0;; ++n) {
-    if (n == max_increments) throw std::logic_error("Euler ball-ball integration did not terminate");
+    if (n == max_increments)
+      throw std::logic_error("Euler ball-ball integration did not terminate");
     rates(m, y, rolling, dy);
     ++out.evaluations;
     const double g_before = y[kV1n] - y[kV2n];
@@ -435,15 +453,17 @@ void validateBallBallParams(const BallBallParams& p) {
         requireFinite("friction fit a", p.friction_fit_a);
         requireFinite("friction fit b", p.friction_fit_b);
         requireFinite("friction fit c (s/m)", p.friction_fit_c_s_per_m);
-        if (!(p.friction_fit_a >= 0)) rejectValue("friction fit a", p.friction_fit_a, "it must be >= 0");
-        if (!(p.friction_fit_b >= 0)) rejectValue("friction fit b", p.friction_fit_b, "it must be >= 0");
+        if (!(p.friction_fit_a >= 0))
+          rejectValue("friction fit a", p.friction_fit_a, "it must be >= 0");
+        if (!(p.friction_fit_b >= 0))
+          rejectValue("friction fit b", p.friction_fit_b, "it must be >= 0");
         if (!(p.friction_fit_c_s_per_m >= 0)) {
           rejectValue("friction fit c (s/m)", p.friction_fit_c_s_per_m, "it must be >= 0");
         }
         // mu at zero slip speed is a + b, the largest the fit gives.
         if (!(p.friction_fit_a + p.friction_fit_b < 1)) {
           rejectValue("friction fit a + b", p.friction_fit_a + p.friction_fit_b,
-                 "the friction at zero slip speed must lie below 1");
+                      "the friction at zero slip speed must lie below 1");
         }
       } else if (p.friction_law == BallBallFrictionLaw::Constant) {
         requireFinite("ball-ball friction mu", p.constant_friction);
@@ -451,9 +471,9 @@ void validateBallBallParams(const BallBallParams& p) {
           rejectValue("ball-ball friction mu", p.constant_friction, "it must lie in [0, 1)");
         }
       } else {
-        throw std::invalid_argument("ball-ball friction law = " +
-                                    std::to_string(static_cast<int>(p.friction_law)) +
-                                    " is not allowed: it must be AlciatoreFit or Constant");
+        throw std::invalid_argument(
+            "ball-ball friction law = " + std::to_string(static_cast<int>(p.friction_law)) +
+            " is not allowed: it must be AlciatoreFit or Constant");
       }
       break;
     case BallBallModel::Mathavan2014: {
@@ -467,20 +487,23 @@ void validateBallBallParams(const BallBallParams& p) {
       const double mu_b_limit = 1 / (2.5 + 3.5 * p.cloth_friction);
       if (!(p.ball_friction >= 0 && p.ball_friction < mu_b_limit)) {
         rejectValue("ball-ball friction mu_b", p.ball_friction,
-               "with mu_s = " + valueText(p.cloth_friction) + " it must lie in [0, " + valueText(mu_b_limit) +
-                   "), or a cloth contact could stick during the impact");
+                    "with mu_s = " + valueText(p.cloth_friction) + " it must lie in [0, " +
+                        valueText(mu_b_limit) +
+                        "), or a cloth contact could stick during the impact");
       }
       if (!(p.tolerance >= 1e-14 && p.tolerance <= 1e-3)) {
         rejectValue("integration tolerance", p.tolerance, "it must lie in [1e-14, 1e-3]");
       }
       if (p.fixed_steps < 0) {
-        rejectValue("fixed Euler steps", p.fixed_steps, "it must be >= 0 (0 selects the adaptive solver)");
+        rejectValue("fixed Euler steps", p.fixed_steps,
+                    "it must be >= 0 (0 selects the adaptive solver)");
       }
       break;
     }
     default:
-      throw std::invalid_argument("ball-ball model = " + std::to_string(static_cast<int>(p.model)) +
-                                  " is not allowed: it must be FrictionalInelastic or Mathavan2014");
+      throw std::invalid_argument(
+          "ball-ball model = " + std::to_string(static_cast<int>(p.model)) +
+          " is not allowed: it must be FrictionalInelastic or Mathavan2014");
   }
 }
 
@@ -493,25 +516,43 @@ void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball
                              const Eigen::Vector3d& n) {
   const char* axes[] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i) {
-    requireFinite(std::string("ball 1 v_") + axes[i] + " (m/s)", ball1.v[i]);
-    requireFinite(std::string("ball 1 w_") + axes[i] + " (rad/s)", ball1.w[i]);
-    requireFinite(std::string("ball 2 v_") + axes[i] + " (m/s)", ball2.v[i]);
-    requireFinite(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i]);
-    requireFinite(std::string("line of centres n_") + axes[i], n[i]);
+    if (!std::isfinite(ball1.v[i])) {
+      rejectValue(std::string("ball 1 v_") + axes[i] + " (m/s)", ball1.v[i],
+                  "it must be a finite number");
+    }
+    if (!std::isfinite(ball1.w[i])) {
+      rejectValue(std::string("ball 1 w_") + axes[i] + " (rad/s)", ball1.w[i],
+                  "it must be a finite number");
+    }
+    if (!std::isfinite(ball2.v[i])) {
+      rejectValue(std::string("ball 2 v_") + axes[i] + " (m/s)", ball2.v[i],
+                  "it must be a finite number");
+    }
+    if (!std::isfinite(ball2.w[i])) {
+      rejectValue(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i],
+                  "it must be a finite number");
+    }
+    if (!std::isfinite(n[i])) {
+      rejectValue(std::string("line of centres n_") + axes[i], n[i], "it must be a finite number");
+    }
   }
-  if (ball1.v.z() != 0) rejectValue("ball 1 v_z (m/s)", ball1.v.z(), "the ball must be on the table (0)");
-  if (ball2.v.z() != 0) rejectValue("ball 2 v_z (m/s)", ball2.v.z(), "the ball must be on the table (0)");
+  if (ball1.v.z() != 0)
+    rejectValue("ball 1 v_z (m/s)", ball1.v.z(), "the ball must be on the table (0)");
+  if (ball2.v.z() != 0)
+    rejectValue("ball 2 v_z (m/s)", ball2.v.z(), "the ball must be on the table (0)");
   if (!(std::abs(n.norm() - 1) <= kLineOfCentresTolerance)) {
     rejectValue("line of centres |n|", n.norm(), "it must be a unit vector (within 1e-9)");
   }
   if (!(std::abs(n.z()) <= kLineOfCentresTolerance)) {
-    rejectValue("line of centres n_z", n.z(), "balls on the table touch at their equators (0 within 1e-9)");
+    rejectValue("line of centres n_z", n.z(),
+                "balls on the table touch at their equators (0 within 1e-9)");
   }
   const double approach = approachSpeed(ball1, ball2, n);
   if (!(approach > 0)) {
-    rejectValue("approach speed (v1 - v2) . n (m/s)", approach,
-           "the balls must approach along the line of centres (> 0); a separating or grazing pair "
-           "needs no impact");
+    rejectValue(
+        "approach speed (v1 - v2) . n (m/s)", approach,
+        "the balls must approach along the line of centres (> 0); a separating or grazing pair "
+        "needs no impact");
   }
 }
 
@@ -525,8 +566,7 @@ Eigen::Vector3d contactSlip(const BallBallParams& params, const BallVelocity& ba
                             const BallVelocity& ball2, const Eigen::Vector3d& line_of_centres) {
   const Frame f = frameOf(line_of_centres);
   const double R = params.radius_m;
-  const Eigen::Vector3d g =
-      (ball1.v - ball2.v) + R * (ball1.w + ball2.w).cross(f.n);
+  const Eigen::Vector3d g = (ball1.v - ball2.v) + R * (ball1.w + ball2.w).cross(f.n);
   return g - g.dot(f.n) * f.n;
 }
 
@@ -583,16 +623,16 @@ BallBallImpactResult resolveBallBallImpact(const BallBallParams& params, const B
     result.discarded_vertical_velocity_mps[0] = f_z / m1;
     result.discarded_vertical_velocity_mps[1] = -f_z / m2;
   } else {
-    const double speed_scale = std::max({ball1.v.norm(), ball2.v.norm(), R * ball1.w.norm(),
-                                         R * ball2.w.norm()});
-    const Model model{R, m1, m2, I1, I2, params.ball_friction, params.cloth_friction,
-                      kSlipFloor * speed_scale};
+    const double speed_scale =
+        std::max({ball1.v.norm(), ball2.v.norm(), R * ball1.w.norm(), R * ball2.w.norm()});
+    const Model model{
+        R, m1, m2, I1, I2, params.ball_friction, params.cloth_friction, kSlipFloor * speed_scale};
     State y{};
     y[kV1n] = v1n, y[kV1t] = v1t, y[kW1n] = w1.x(), y[kW1t] = w1.y(), y[kW1z] = w1.z();
     y[kV2n] = v2n, y[kV2t] = v2t, y[kW2n] = w2.x(), y[kW2t] = w2.y(), y[kW2z] = w2.z();
-    const MathavanOutcome o =
-        params.fixed_steps > 0 ? integrateEuler(model, y, e, params.fixed_steps)
-                               : integrateAdaptive(model, y, speed_scale, e, params.tolerance);
+    const MathavanOutcome o = params.fixed_steps > 0
+                                  ? integrateEuler(model, y, e, params.fixed_steps)
+                                  : integrateAdaptive(model, y, speed_scale, e, params.tolerance);
     const State& z = o.y;
     v1_out = {z[kV1n], z[kV1t]};
     v2_out = {z[kV2n], z[kV2t]};

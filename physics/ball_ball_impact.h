@@ -12,15 +12,16 @@
 //   the value that makes that slip zero. mu is Alciatore's fit of measured throw,
 //   mu(u) = a + b exp(-c u) with u the slip speed at the contact (m/s), or a constant.
 //
-// * Mathavan2014 (Mathavan, Jackson & Parkin 2014, Sports Engineering 17:227-237). The method of the
+// * Mathavan2014 (Mathavan, Jackson & Parkin 2014, Sports Engineering 17:227-237). The method of
+// the
 //   seed cushion paper applied to the ball-ball contact: integration in P, the normal impulse at
 //   the ball-ball contact, with Coulomb friction (mu_b) at that contact and at each ball's cloth
 //   contact (mu_s); compression ends when the normal relative velocity is zero; restitution ends by
 //   Stronge's energetic criterion (the normal work returned is e^2 of the work absorbed).
 //
-// The vertical friction impulse (both models). The contact slip has a vertical part, R (w1 + w2) x n
-// along z, whenever the balls carry topspin or backspin; friction opposes it, so it pushes one ball
-// down into the cloth and lifts the other by the same impulse. Both models keep that vertical
+// The vertical friction impulse (both models). The contact slip has a vertical part, R (w1 + w2) x
+// n along z, whenever the balls carry topspin or backspin; friction opposes it, so it pushes one
+// ball down into the cloth and lifts the other by the same impulse. Both models keep that vertical
 // friction (it changes the balls' spins about the horizontal tangent; that is how follow reduces
 // throw) and keep both balls on the table: the vertical velocity it would give is removed (v.z = 0
 // after the impact) and reported in discarded_vertical_velocity_mps. For the ball pressed down the
@@ -52,20 +53,21 @@ enum class BallBallFrictionLaw {
 };
 
 // Constants of one impact. Defaults: the frictional inelastic model with pool balls (57.15 mm,
-// 0.170 kg, e = 0.95). snookerMathavan2014Params() gives the Mathavan model with the paper's values.
+// 0.170 kg, e = 0.95). snookerMathavan2014Params() gives the Mathavan model with the paper's
+// values.
 struct BallBallParams {
   BallBallModel model = BallBallModel::FrictionalInelastic;
-  double radius_m = 0.028575;   // both balls (WPA pool ball, 57.15 mm diameter)
-  double mass1_kg = 0.170;      // ball 1
-  double mass2_kg = 0.170;      // ball 2
-  double restitution = 0.95;    // e in [0, 1]: Newton's (FrictionalInelastic) or energetic (Mathavan)
+  double radius_m = 0.028575;  // both balls (WPA pool ball, 57.15 mm diameter)
+  double mass1_kg = 0.170;     // ball 1
+  double mass2_kg = 0.170;     // ball 2
+  double restitution = 0.95;  // e in [0, 1]: Newton's (FrictionalInelastic) or energetic (Mathavan)
 
   // FrictionalInelastic only.
   BallBallFrictionLaw friction_law = BallBallFrictionLaw::AlciatoreFit;
-  double friction_fit_a = 9.951e-3;        // mu at high slip speed
-  double friction_fit_b = 0.108;           // extra mu at zero slip speed
-  double friction_fit_c_s_per_m = 1.088;   // decay rate of mu with slip speed, s/m
-  double constant_friction = 0.06;         // mu for BallBallFrictionLaw::Constant
+  double friction_fit_a = 9.951e-3;       // mu at high slip speed
+  double friction_fit_b = 0.108;          // extra mu at zero slip speed
+  double friction_fit_c_s_per_m = 1.088;  // decay rate of mu with slip speed, s/m
+  double constant_friction = 0.06;        // mu for BallBallFrictionLaw::Constant
 
   // Mathavan2014 only.
   double ball_friction = 0.05;    // mu_b, ball on ball
@@ -98,8 +100,8 @@ double approachSpeed(const BallVelocity& ball1, const BallVelocity& ball2,
 void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball2,
                              const Eigen::Vector3d& line_of_centres);
 
-// How far |n| may be from 1, and n.z from 0 (dimensionless): n comes from a normalised difference of
-// centres, whose error is a few ulp; anything larger means the caller passed the wrong vector.
+// How far |n| may be from 1, and n.z from 0 (dimensionless): n comes from a normalised difference
+// of centres, whose error is a few ulp; anything larger means the caller passed the wrong vector.
 constexpr double kLineOfCentresTolerance = 1e-9;
 
 // Alciatore's friction law (or the constant), for a contact slip speed in m/s.
@@ -114,7 +116,7 @@ Eigen::Vector3d contactSlip(const BallBallParams& params, const BallVelocity& ba
 struct BallBallImpactResult {
   BallVelocity ball1;  // after the impact, world frame, v.z = 0
   BallVelocity ball2;
-  double normal_impulse_Ns = 0;       // total normal impulse at the ball-ball contact (on ball 2, +n)
+  double normal_impulse_Ns = 0;  // total normal impulse at the ball-ball contact (on ball 2, +n)
   double compression_impulse_Ns = 0;  // normal impulse when compression ended
   double compression_work_J = 0;      // work the normal force absorbed during compression
   // Friction impulse at the ball-ball contact acting on ball 1 (ball 2 gets the opposite), world

@@ -1,11 +1,11 @@
 #include "physics/cloth_motion.h"
 
-#include "physics/value_text.h"
-
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "physics/value_text.h"
 
 namespace baize::physics {
 namespace {
@@ -40,10 +40,12 @@ double durationOf(const ClothParams& params, const BallState& ball, MotionState 
   switch (state) {
     case MotionState::Sliding:
       return 2 * length(slipOf(params, ball)) / (7 * slidingDeceleration(params));
-    case MotionState::Rolling: return length(ball.velocity.head<2>()) / rollingDeceleration(params);
+    case MotionState::Rolling:
+      return length(ball.velocity.head<2>()) / rollingDeceleration(params);
     case MotionState::Spinning:
       return std::abs(ball.angular_velocity.z()) / spinDeceleration(params);
-    case MotionState::Stationary: break;
+    case MotionState::Stationary:
+      break;
   }
   return std::numeric_limits<double>::infinity();
 }
@@ -145,8 +147,8 @@ void validateClothParams(const ClothParams& p) {
   }
   if (!(p.rolling_friction > 0 && p.rolling_friction < p.sliding_friction)) {
     rejectValue("cloth rolling friction mu_r", p.rolling_friction,
-           "it must lie in (0, mu_s) = (0, " + valueText(p.sliding_friction) +
-               "): rolling resistance is far below sliding friction");
+                "it must lie in (0, mu_s) = (0, " + valueText(p.sliding_friction) +
+                    "): rolling resistance is far below sliding friction");
   }
   if (!(p.spinning_friction > 0 && p.spinning_friction < 1)) {
     rejectValue("cloth spinning friction mu_sp", p.spinning_friction, "it must lie in (0, 1)");
@@ -158,14 +160,16 @@ double spinDeceleration(const ClothParams& p) {
 }
 
 void validateBallState(const BallState& ball) {
-  const char* axes = "xyz";
-  for (int i = 0; i < 2; ++i) {
-    requireFinite(std::string("ball position ") + axes[i] + " (m)", ball.position[i]);
-  }
+  static const char* const position[] = {"ball position x (m)", "ball position y (m)"};
+  static const char* const velocity[] = {"ball velocity v_x (m/s)", "ball velocity v_y (m/s)",
+                                         "ball velocity v_z (m/s)"};
+  static const char* const spin[] = {"ball angular velocity w_x (rad/s)",
+                                     "ball angular velocity w_y (rad/s)",
+                                     "ball angular velocity w_z (rad/s)"};
+  for (int i = 0; i < 2; ++i) requireFinite(position[i], ball.position[i]);
   for (int i = 0; i < 3; ++i) {
-    requireFinite(std::string("ball velocity v_") + axes[i] + " (m/s)", ball.velocity[i]);
-    requireFinite(std::string("ball angular velocity w_") + axes[i] + " (rad/s)",
-                  ball.angular_velocity[i]);
+    requireFinite(velocity[i], ball.velocity[i]);
+    requireFinite(spin[i], ball.angular_velocity[i]);
   }
   if (ball.velocity.z() != 0) {
     rejectValue("ball velocity v_z (m/s)", ball.velocity.z(), "a ball on the cloth has v_z = 0");
@@ -174,10 +178,14 @@ void validateBallState(const BallState& ball) {
 
 const char* motionStateName(MotionState state) {
   switch (state) {
-    case MotionState::Sliding: return "sliding";
-    case MotionState::Rolling: return "rolling";
-    case MotionState::Spinning: return "spinning";
-    case MotionState::Stationary: return "stationary";
+    case MotionState::Sliding:
+      return "sliding";
+    case MotionState::Rolling:
+      return "rolling";
+    case MotionState::Spinning:
+      return "spinning";
+    case MotionState::Stationary:
+      return "stationary";
   }
   return "unknown";
 }
@@ -208,8 +216,8 @@ BallState advanceWithinState(const ClothParams& params, const BallState& ball, d
   const double duration = durationOf(params, ball, state);
   if (!(dt_s >= 0 && dt_s <= duration && std::isfinite(dt_s))) {
     rejectValue("time step dt (s)", dt_s,
-           std::string("it must lie in [0, ") + valueText(duration) + "], the time the ball stays " +
-               motionStateName(state));
+                std::string("it must lie in [0, ") + valueText(duration) +
+                    "], the time the ball stays " + motionStateName(state));
   }
   return withinState(params, ball, state, duration, dt_s);
 }

@@ -1,11 +1,11 @@
 #include "physics/cue_strike.h"
 
-#include "physics/value_text.h"
-
 #include <Eigen/Geometry>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "physics/value_text.h"
 
 // Derivation of the impulse.
 //
@@ -15,19 +15,20 @@
 //   v = F d / m,   w = (Q x d) F / I,   cue speed after V' = V - F / m_c.
 // Velocity of the ball's surface point Q along d:
 //   (v + w x Q) . d = F / m + (F / I) ((Q x d) x Q) . d = F / m + (F / I) |Q x d|^2
-// (scalar triple product), = (F / m) (1 + (5 / (2 R^2)) l^2) with l = |Q x d|, the distance from the
-// centre to the cue line. Newton's restitution at the tip along d, (ball point - cue) = e_tip V:
+// (scalar triple product), = (F / m) (1 + (5 / (2 R^2)) l^2) with l = |Q x d|, the distance from
+// the centre to the cue line. Newton's restitution at the tip along d, (ball point - cue) = e_tip
+// V:
 //   (F / m)(1 + 5 l^2 / (2 R^2)) - V + F / m_c = e_tip V
 //   => F = (1 + e_tip) m V / (1 + m / m_c + 5 l^2 / (2 R^2)).
-// This is a one-dimensional collision of m_c with the effective mass m / (1 + 5 l^2 / (2 R^2)), so the
-// ball's kinetic energy F^2 / (2 m_eff) never exceeds what the cue loses, with equality at e_tip = 1.
-// The cross term. With Q = R (a r + b z - c h) and d = cos(th) h - sin(th) z:
+// This is a one-dimensional collision of m_c with the effective mass m / (1 + 5 l^2 / (2 R^2)), so
+// the ball's kinetic energy F^2 / (2 m_eff) never exceeds what the cue loses, with equality at
+// e_tip = 1. The cross term. With Q = R (a r + b z - c h) and d = cos(th) h - sin(th) z:
 //   Q . d = -R (c cos th + b sin th),
 //   l^2 = R^2 - (Q . d)^2 = R^2 (a^2 + b^2 cos^2 th + c^2 sin^2 th - 2 b c sin th cos th)
 //       = R^2 (a^2 + (b cos th - c sin th)^2).
 // The cross term's sign follows from Q sitting behind the ball (-c h) while the cue points down
-// (-sin th z): for a high hit (b > 0) raising the cue swings its line towards the centre, through it
-// at tan th = b / c, so the same b gives less spin. Level cue: l^2 = R^2 (a^2 + b^2).
+// (-sin th z): for a high hit (b > 0) raising the cue swings its line towards the centre, through
+// it at tan th = b / c, so the same b gives less spin. Level cue: l^2 = R^2 (a^2 + b^2).
 
 namespace baize::physics {
 namespace {
@@ -50,7 +51,8 @@ void validateCueStrikeParams(const CueStrikeParams& p) {
   if (p.end_mass_kg) {
     requireFinite("cue end mass (kg)", *p.end_mass_kg);
     if (!(*p.end_mass_kg > 0)) {
-      rejectValue("cue end mass (kg)", *p.end_mass_kg, "it must be > 0 (leave it empty for no squirt)");
+      rejectValue("cue end mass (kg)", *p.end_mass_kg,
+                  "it must be > 0 (leave it empty for no squirt)");
     }
   }
 }
@@ -63,14 +65,16 @@ void validateCueShot(const CueShot& s) {
   requireFinite("tip height offset b (units of R)", s.height_offset);
   if (!(s.speed_mps >= 0)) rejectValue("cue speed V (m/s)", s.speed_mps, "it must be >= 0");
   if (!(s.elevation_rad >= 0 && s.elevation_rad < kPi / 2)) {
-    rejectValue("cue elevation theta (rad)", s.elevation_rad,
-           "it must lie in [0, pi/2): the cue cannot come from below the table or straight down");
+    rejectValue(
+        "cue elevation theta (rad)", s.elevation_rad,
+        "it must lie in [0, pi/2): the cue cannot come from below the table or straight down");
   }
   const double offset = std::hypot(s.side_offset, s.height_offset);
   if (!(offset <= kMiscueOffsetLimit)) {
     rejectValue("tip offset sqrt(a^2 + b^2) (units of R)", offset,
-           "it must be at most " + valueText(kMiscueOffsetLimit) + " or the tip miscues (a = " +
-               valueText(s.side_offset) + ", b = " + valueText(s.height_offset) + ")");
+                "it must be at most " + valueText(kMiscueOffsetLimit) +
+                    " or the tip miscues (a = " + valueText(s.side_offset) +
+                    ", b = " + valueText(s.height_offset) + ")");
   }
 }
 
@@ -91,13 +95,13 @@ CueStrikeResult strikeCueBall(const CueStrikeParams& params, const CueShot& shot
   const double facing = c * cos_th + b * sin_th;
   if (!(facing > 0)) {
     rejectValue("cue elevation theta (rad)", shot.elevation_rad,
-           "with b = " + valueText(b) + " the cue line meets the ball behind the tip point " +
-               "(c cos(theta) + b sin(theta) = " + valueText(facing) + " must be > 0)");
+                "with b = " + valueText(b) + " the cue line meets the ball behind the tip point " +
+                    "(c cos(theta) + b sin(theta) = " + valueText(facing) + " must be > 0)");
   }
   const double cross = b * cos_th - c * sin_th;
   const double offset_sq = a * a + cross * cross;  // (l / R)^2
-  const double F = (1 + params.tip_restitution) * m * shot.speed_mps /
-                   (1 + m / m_c + 2.5 * offset_sq);
+  const double F =
+      (1 + params.tip_restitution) * m * shot.speed_mps / (1 + m / m_c + 2.5 * offset_sq);
   const double inertia = 0.4 * m * R * R;
 
   CueStrikeResult result;
@@ -111,7 +115,8 @@ CueStrikeResult strikeCueBall(const CueStrikeParams& params, const CueShot& shot
   v.z() = 0;  // the cloth takes the downward part: no jump in this model
   if (params.end_mass_kg) {
     const double s = 1 - a * a;
-    const double alpha = std::atan(2.5 * a * std::sqrt(s) / (1 + m / *params.end_mass_kg + 2.5 * s));
+    const double alpha =
+        std::atan(2.5 * a * std::sqrt(s) / (1 + m / *params.end_mass_kg + 2.5 * s));
     // Away from the offset side: right english (a > 0) turns the ball left, i.e. counter-clockwise
     // seen from above, which is a positive rotation about z.
     const double ca = std::cos(alpha), sa = std::sin(alpha);

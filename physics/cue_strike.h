@@ -12,7 +12,8 @@
 // the plane normal to an elevated cue).
 //
 // Impulse (derived in cue_strike.cpp). The tip gives the ball F along d through Q:
-//   F = (1 + e_tip) m V / (1 + m / m_c + (5 / (2 R^2)) l^2),   l^2 = |Q x d|^2 = R^2 (a^2 + (b cos theta - c sin theta)^2)
+//   F = (1 + e_tip) m V / (1 + m / m_c + (5 / (2 R^2)) l^2),   l^2 = |Q x d|^2 = R^2 (a^2 + (b cos
+//   theta - c sin theta)^2)
 // with l the distance from the ball's centre to the cue line; v = F d / m, w = Q x F d / I.
 //
 // Cloth. The downward part of F (elevated cue) goes into the cloth: the output has v.z = 0 and the
@@ -23,9 +24,9 @@
 // Sign conventions. Right english (a > 0) gives w_z > 0, counter-clockwise seen from above. Top
 // (b > 0) gives forward roll spin, w = -|w| r; b = 0.4 makes a level strike leave the ball rolling.
 //
-// Squirt (optional): with an end mass m_end the ball leaves rotated in the table plane away from the
-// offset side by the angle with tan(alpha) = (5/2) a sqrt(1 - a^2) / (1 + m / m_end + (5/2)(1 - a^2))
-// (physics-notes section 4), speed and spin unchanged.
+// Squirt (optional): with an end mass m_end the ball leaves rotated in the table plane away from
+// the offset side by the angle with tan(alpha) = (5/2) a sqrt(1 - a^2) / (1 + m / m_end + (5/2)(1 -
+// a^2)) (physics-notes section 4), speed and spin unchanged.
 #pragma once
 
 #include <Eigen/Core>
@@ -40,33 +41,33 @@ namespace baize::physics {
 constexpr double kMiscueOffsetLimit = 0.5;
 
 struct CueStrikeParams {
-  double cue_mass_kg = 0.54;       // m_c, whole cue (19 oz)
+  double cue_mass_kg = 0.54;  // m_c, whole cue (19 oz)
   // e_tip. Alciatore measured 0.71-0.75 for playing cues with medium-hardness leather tips
   // (billiards.colostate.edu, "cue tip efficiency" FAQ and TP A.30); the top of that range.
   double tip_restitution = 0.75;
-  double ball_mass_kg = 0.170;     // m (WPA pool ball)
-  double ball_radius_m = 0.028575; // R
+  double ball_mass_kg = 0.170;      // m (WPA pool ball)
+  double ball_radius_m = 0.028575;  // R
   // Effective end mass of the shaft for squirt, kg (typically 0.005-0.015); empty: no squirt.
   std::optional<double> end_mass_kg;
 };
 
 struct CueShot {
-  double speed_mps = 0;       // V, cue speed just before contact, >= 0
-  double heading_rad = 0;     // phi, aim direction in the table plane
-  double elevation_rad = 0;   // theta in [0, pi/2)
-  double side_offset = 0;     // a, units of R, + right looking along the cue
-  double height_offset = 0;   // b, units of R, + above the centre
+  double speed_mps = 0;      // V, cue speed just before contact, >= 0
+  double heading_rad = 0;    // phi, aim direction in the table plane
+  double elevation_rad = 0;  // theta in [0, pi/2)
+  double side_offset = 0;    // a, units of R, + right looking along the cue
+  double height_offset = 0;  // b, units of R, + above the centre
 };
 
 struct CueStrikeResult {
-  BallVelocity ball;                     // world frame, v.z = 0
-  double impulse_Ns = 0;                 // F
-  Eigen::Vector3d cue_axis = Eigen::Vector3d::Zero();       // d, unit
+  BallVelocity ball;                                          // world frame, v.z = 0
+  double impulse_Ns = 0;                                      // F
+  Eigen::Vector3d cue_axis = Eigen::Vector3d::Zero();         // d, unit
   Eigen::Vector3d contact_point_m = Eigen::Vector3d::Zero();  // Q relative to the ball's centre
-  double cue_line_offset_m = 0;          // l, distance from the ball's centre to the cue line
-  double cue_speed_after_mps = 0;        // V - F / m_c
+  double cue_line_offset_m = 0;                // l, distance from the ball's centre to the cue line
+  double cue_speed_after_mps = 0;              // V - F / m_c
   double discarded_vertical_velocity_mps = 0;  // -F sin(theta) / m, absorbed by the cloth (<= 0)
-  double squirt_angle_rad = 0;           // signed: > 0 turns the ball to the left of the aim
+  double squirt_angle_rad = 0;                 // signed: > 0 turns the ball to the left of the aim
 };
 
 // Throw std::invalid_argument naming the value and the allowed range.

@@ -1,7 +1,5 @@
 #include "physics/cushion_exact_solver.h"
 
-#include "physics/value_text.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,12 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "physics/value_text.h"
+
 // How the solver works (the derivation is in docs/cushion.md).
 //
-// Write a = -(friction impulse rate at I) in the basis (x, Y') and b = -(friction impulse rate at C) in
-// (x, y), both per unit of P. While both contacts slip, a = mu_w (cos Phi, sin Phi) and
-// b = mu_s q (cos Phi', sin Phi') with q = sin th + cos th a_y (eq. 8). Every velocity is linear in
-// P and in the integrals A = int a dP and B = int b dP (impulseResponse), and so are the slips:
+// Write a = -(friction impulse rate at I) in the basis (x, Y') and b = -(friction impulse rate at
+// C) in (x, y), both per unit of P. While both contacts slip, a = mu_w (cos Phi, sin Phi) and b =
+// mu_s q (cos Phi', sin Phi') with q = sin th + cos th a_y (eq. 8). Every velocity is linear in P
+// and in the integrals A = int a dP and B = int b dP (impulseResponse), and so are the slips:
 //
 //   u_I(P) = u_I(0) - (1/M) [ 7/2 A_x + (1 - 5s/2) B_x ,  (s^2 + 5/2) A_y + (5/2 - s) B_y - s c P ]
 //   u_C(P) = u_C(0) - (1/M) [ (1 - 5s/2) A_x + 7/2 B_x ,  c P + (5/2 - s) A_y + 7/2 B_y ]
@@ -27,18 +27,18 @@
 //
 // A slipping contact's friction is along u / |u|, which turns infinitely fast as u -> 0: in P the
 // equations are singular there, and steps in P chatter or crawl toward the zero. So the independent
-// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + L |du/dP|). In tau
-// a slip that vanishes decays exponentially and one that turns does so smoothly (its direction turns
-// at most about 1/L per unit tau), while a slip far from zero, or one that changes slowly, runs at
-// sigma ~ 1. When a slip is below the vanishing threshold the contact
-// sticks if its friction cone can hold it; otherwise it slips off along the one direction in which
-// its slip grows along itself. A stuck contact whose cone stops holding it (an event) slips along the
-// friction it needed, so friction stays continuous.
+// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + L |du/dP|). In
+// tau a slip that vanishes decays exponentially and one that turns does so smoothly (its direction
+// turns at most about 1/L per unit tau), while a slip far from zero, or one that changes slowly,
+// runs at sigma ~ 1. When a slip is below the vanishing threshold the contact sticks if its
+// friction cone can hold it; otherwise it slips off along the one direction in which its slip grows
+// along itself. A stuck contact whose cone stops holding it (an event) slips along the friction it
+// needed, so friction stays continuous.
 //
 // The system in tau is integrated with the Dormand-Prince 8(5,3) pair. The ends of compression
-// (v_y = 0) and restitution (W = (1 - e^2) W_c, eq. 17b) and the instants a stuck contact breaks are
-// events, located by Newton's method (or Illinois regula falsi) on the step length, each trial a full
-// Runge-Kutta step.
+// (v_y = 0) and restitution (W = (1 - e^2) W_c, eq. 17b) and the instants a stuck contact breaks
+// are events, located by Newton's method (or Illinois regula falsi) on the step length, each trial
+// a full Runge-Kutta step.
 
 namespace baize::physics {
 namespace {
@@ -47,23 +47,24 @@ using State = Eigen::Matrix<double, 6, 1>;  // (P, A_x, A_y, B_x, B_y: N s; W: J
 enum : int { kP = 0, kAx = 1, kAy = 2, kBx = 3, kBy = 4, kWork = 5 };
 
 // s0 of the change of variable, as a fraction of the velocity scale: below it a slipping contact's
-// own slip sets the pace (its direction turns over impulses of about M |u| / mu). A held contact whose
-// slip grows to it slips on as an ordinary slipping contact.
+// own slip sets the pace (its direction turns over impulses of about M |u| / mu). A held contact
+// whose slip grows to it slips on as an ordinary slipping contact.
 constexpr double kRegularizingSlipFraction = 1e-3;
-// A slip below this fraction of (tolerance x velocity scale) has vanished. It must lie above what the
-// integration resolves of a slip (impulse errors of tolerance x M V reach the slips through the contact
-// matrix, whose entries are up to 7/2, as about 3.5 tolerance x V), and taking it as zero moves the
-// result by about that much: the remaining impulse to its true zero is about M |u| / (7/2 mu), over
-// which friction of any direction changes the velocities by less than |u|.
+// A slip below this fraction of (tolerance x velocity scale) has vanished. It must lie above what
+// the integration resolves of a slip (impulse errors of tolerance x M V reach the slips through the
+// contact matrix, whose entries are up to 7/2, as about 3.5 tolerance x V), and taking it as zero
+// moves the result by about that much: the remaining impulse to its true zero is about M |u| / (7/2
+// mu), over which friction of any direction changes the velocities by less than |u|.
 constexpr double kVanishedSlipFraction = 10;
-// A held contact sliding along phi* slips as its own slip says once its slip's misalignment with phi*
+// A held contact sliding along phi* slips as its own slip says once its slip's misalignment with
+// phi*
 // (|u| sin angle, which measures what the held law has missed) reaches this fraction of
 // (tolerance x velocity scale).
 constexpr double kCreepErrorFraction = 10;
 // A slipping contact whose slip stays below this multiple of the vanishing threshold for this many
 // accepted steps has vanished: it lies within the integration's noise of zero and would only wander
-// there (a slip that friction can barely hold decays very slowly). Taking it as zero moves the result
-// by less than that multiple of the threshold.
+// there (a slip that friction can barely hold decays very slowly). Taking it as zero moves the
+// result by less than that multiple of the threshold.
 constexpr double kStagnantSlipMultiple = 10;
 constexpr int kStagnantSlipSteps = 50;
 // A slipping contact whose slip is below this fraction of the regularizing slip is checked for
@@ -98,8 +99,8 @@ constexpr double kStepMaxFactor = 3.0;
 constexpr double kFirstStepFraction = 0.2;
 // Samples on the circle when searching for the direction a contact slips off in from rest.
 constexpr int kDirectionSamples = 72;
-// The tolerances accepted: below 1e-14 the slips are not resolved in double precision; above 1e-2 the
-// events are not located meaningfully.
+// The tolerances accepted: below 1e-14 the slips are not resolved in double precision; above 1e-2
+// the events are not located meaningfully.
 constexpr double kMinTolerance = 1e-14;
 constexpr double kMaxTolerance = 1e-2;
 // Logic guards, far above what the bounded equations need (an impact takes tens of steps and a few
@@ -110,37 +111,47 @@ constexpr int kMaxEventIterations = 60;
 
 constexpr double kEpsilon = 2.220446049250313e-16;
 
-// The Dormand-Prince 8(5,3) pair (Hairer, Norsett & Wanner, Solving ODEs I, 2nd ed., section II.10):
-// 12 stages, the last evaluation reused as the next step's first; error estimated from embedded 5th-
-// and 3rd-order solutions.
+// The Dormand-Prince 8(5,3) pair (Hairer, Norsett & Wanner, Solving ODEs I, 2nd ed., section
+// II.10): 12 stages, the last evaluation reused as the next step's first; error estimated from
+// embedded 5th- and 3rd-order solutions.
 namespace dp853 {
 constexpr double a21 = 5.26001519587677318785587544488e-2;
 constexpr double a31 = 1.97250569845378994544595329183e-2, a32 = 5.91751709536136983633785987549e-2;
 constexpr double a41 = 2.95875854768068491816892993775e-2, a43 = 8.87627564304205475450678981324e-2;
-constexpr double a51 = 2.41365134159266685502369798665e-1, a53 = -8.84549479328286085344864962717e-1,
+constexpr double a51 = 2.41365134159266685502369798665e-1,
+                 a53 = -8.84549479328286085344864962717e-1,
                  a54 = 9.24834003261792003115737966543e-1;
 constexpr double a61 = 3.7037037037037037037037037037e-2, a64 = 1.70828608729473871279604482173e-1,
                  a65 = 1.25467687566822425016691814123e-1;
 constexpr double a71 = 3.7109375e-2, a74 = 1.70252211019544039314978060272e-1,
                  a75 = 6.02165389804559606850219397283e-2, a76 = -1.7578125e-2;
 constexpr double a81 = 3.70920001185047927108779319836e-2, a84 = 1.70383925712239993810214054705e-1,
-                 a85 = 1.07262030446373284651809199168e-1, a86 = -1.53194377486244017527936158236e-2,
+                 a85 = 1.07262030446373284651809199168e-1,
+                 a86 = -1.53194377486244017527936158236e-2,
                  a87 = 8.27378916381402288758473766002e-3;
 constexpr double a91 = 6.24110958716075717114429577812e-1, a94 = -3.36089262944694129406857109825e0,
                  a95 = -8.68219346841726006818189891453e-1, a96 = 2.75920996994467083049415600797e1,
                  a97 = 2.01540675504778934086186788979e1, a98 = -4.34898841810699588477366255144e1;
-constexpr double a101 = 4.77662536438264365890433908527e-1, a104 = -2.48811461997166764192642586468e0,
-                 a105 = -5.90290826836842996371446475743e-1, a106 = 2.12300514481811942347288949897e1,
-                 a107 = 1.52792336328824235832596922938e1, a108 = -3.32882109689848629194453265587e1,
+constexpr double a101 = 4.77662536438264365890433908527e-1,
+                 a104 = -2.48811461997166764192642586468e0,
+                 a105 = -5.90290826836842996371446475743e-1,
+                 a106 = 2.12300514481811942347288949897e1, a107 = 1.52792336328824235832596922938e1,
+                 a108 = -3.32882109689848629194453265587e1,
                  a109 = -2.03312017085086261358222928593e-2;
-constexpr double a111 = -9.3714243008598732571704021658e-1, a114 = 5.18637242884406370830023853209e0,
-                 a115 = 1.09143734899672957818500254654e0, a116 = -8.14978701074692612513997267357e0,
-                 a117 = -1.85200656599969598641566180701e1, a118 = 2.27394870993505042818970056734e1,
-                 a119 = 2.49360555267965238987089396762e0, a1110 = -3.0467644718982195003823669022e0;
-constexpr double a121 = 2.27331014751653820792359768449e0, a124 = -1.05344954667372501984066689879e1,
-                 a125 = -2.00087205822486249909675718444e0, a126 = -1.79589318631187989172765950534e1,
-                 a127 = 2.79488845294199600508499808837e1, a128 = -2.85899827713502369474065508674e0,
-                 a129 = -8.87285693353062954433549289258e0, a1210 = 1.23605671757943030647266201528e1,
+constexpr double a111 = -9.3714243008598732571704021658e-1,
+                 a114 = 5.18637242884406370830023853209e0, a115 = 1.09143734899672957818500254654e0,
+                 a116 = -8.14978701074692612513997267357e0,
+                 a117 = -1.85200656599969598641566180701e1,
+                 a118 = 2.27394870993505042818970056734e1, a119 = 2.49360555267965238987089396762e0,
+                 a1110 = -3.0467644718982195003823669022e0;
+constexpr double a121 = 2.27331014751653820792359768449e0,
+                 a124 = -1.05344954667372501984066689879e1,
+                 a125 = -2.00087205822486249909675718444e0,
+                 a126 = -1.79589318631187989172765950534e1,
+                 a127 = 2.79488845294199600508499808837e1,
+                 a128 = -2.85899827713502369474065508674e0,
+                 a129 = -8.87285693353062954433549289258e0,
+                 a1210 = 1.23605671757943030647266201528e1,
                  a1211 = 6.43392746015763530355970484046e-1;
 constexpr double b1 = 5.42937341165687622380535766363e-2, b6 = 4.45031289275240888144113950566e0,
                  b7 = 1.89151789931450038304281599044e0, b8 = -5.8012039600105847814672114227e0,
@@ -151,12 +162,15 @@ constexpr double bhh1 = 0.244094488188976377952755905512, bhh2 = 0.7338466882816
 constexpr double er1 = 0.1312004499419488073250102996e-1, er6 = -0.1225156446376204440720569753e1,
                  er7 = -0.4957589496572501915214079952, er8 = 0.1664377182454986536961530415e1,
                  er9 = -0.3503288487499736816886487290, er10 = 0.3341791187130174790297318841,
-                 er11 = 0.8192320648511571246570742613e-1, er12 = -0.2235530786388629525884427845e-1;
+                 er11 = 0.8192320648511571246570742613e-1,
+                 er12 = -0.2235530786388629525884427845e-1;
 // The 3rd-order estimate's weight in the combined error estimate.
 constexpr double kThirdOrderWeight = 0.01;
 }  // namespace dp853
 
-double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() * q.y() - p.y() * q.x(); }
+double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+  return p.x() * q.y() - p.y() * q.x();
+}
 
 double stepFactor(double error) {
   if (!(error > 0)) return kStepMaxFactor;
@@ -188,9 +202,10 @@ double hermiteRoot(double g0, double d0, double g1, double d1) {
 
 struct ContactState {
   bool frictionless = false;
-  ContactMode mode = ContactMode::Slip;                  // Stick: held (see the top of the file)
-  Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  // slip direction for a slip of exactly zero
-  Eigen::Vector2d creep = Eigen::Vector2d::UnitX();      // held: where to start looking for phi*
+  ContactMode mode = ContactMode::Slip;  // Stick: held (see the top of the file)
+  Eigen::Vector2d direction =
+      Eigen::Vector2d::UnitX();                      // slip direction for a slip of exactly zero
+  Eigen::Vector2d creep = Eigen::Vector2d::UnitX();  // held: where to start looking for phi*
   int small_slip_steps = 0;  // consecutive accepted steps with a slip below kStagnantSlipMultiple
 };
 
@@ -213,7 +228,8 @@ struct Step {
 
 class ExactImpact {
  public:
-  ExactImpact(const CushionParams& params, const BallVelocity& incoming, const ExactSolverOptions& options)
+  ExactImpact(const CushionParams& params, const BallVelocity& incoming,
+              const ExactSolverOptions& options)
       : params_(params), incoming_(incoming), options_(options) {
     s_ = contactSinTheta(params);
     c_ = std::sqrt(1 - s_ * s_);
@@ -239,32 +255,43 @@ class ExactImpact {
   CushionImpactResult run();
 
  private:
-  bool slipping(int k) const { return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Slip; }
-  bool held(int k) const { return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Stick; }
+  bool slipping(int k) const {
+    return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Slip;
+  }
+  bool held(int k) const {
+    return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Stick;
+  }
 
-  // The contact matrix (see the top of the file) times (a_x, a_y, b_x, b_y); half its entries are 0.
+  // The contact matrix (see the top of the file) times (a_x, a_y, b_x, b_y); half its entries are
+  // 0.
   Eigen::Vector4d contactResponse(double ax, double ay, double bx, double by) const {
-    return {3.5 * ax + coupling_x_ * bx, diagonal_y_ * ay + coupling_y_ * by, coupling_x_ * ax + 3.5 * bx,
-            coupling_y_ * ay + 3.5 * by};
+    return {3.5 * ax + coupling_x_ * bx, diagonal_y_ * ay + coupling_y_ * by,
+            coupling_x_ * ax + 3.5 * bx, coupling_y_ * ay + 3.5 * by};
   }
 
   // Both slips at z: (u_I, u_C).
   std::array<Eigen::Vector2d, 2> slips(const State& z) const {
     const Eigen::Vector4d response = contactResponse(z[kAx], z[kAy], z[kBx], z[kBy]);
-    return {Eigen::Vector2d(slip0_[0] - Eigen::Vector2d(response[0], response[1] - s_ * c_ * z[kP]) / M_),
-            Eigen::Vector2d(slip0_[1] - Eigen::Vector2d(response[2], response[3] + c_ * z[kP]) / M_)};
+    return {
+        Eigen::Vector2d(slip0_[0] -
+                        Eigen::Vector2d(response[0], response[1] - s_ * c_ * z[kP]) / M_),
+        Eigen::Vector2d(slip0_[1] - Eigen::Vector2d(response[2], response[3] + c_ * z[kP]) / M_)};
   }
   Eigen::Vector2d slip(int k, const State& z) const { return slips(z)[k]; }
 
-  double normalVelocity(const State& z) const { return vy0_ - (c_ * z[kP] - s_ * z[kAy] + z[kBy]) / M_; }
+  double normalVelocity(const State& z) const {
+    return vy0_ - (c_ * z[kP] - s_ * z[kAy] + z[kBy]) / M_;
+  }
 
   // Friction per unit P under the given laws (a contact with a zero direction has no friction).
   Friction frictionFor(const Laws& laws) const {
     const double s = s_, c = c_;
     const bool stick_I = !contacts_[0].frictionless && laws.stick[0];
     const bool stick_C = !contacts_[1].frictionless && laws.stick[1];
-    const Eigen::Vector2d slide_I = contacts_[0].frictionless ? Eigen::Vector2d::Zero() : laws.direction[0];
-    const Eigen::Vector2d slide_C = contacts_[1].frictionless ? Eigen::Vector2d::Zero() : laws.direction[1];
+    const Eigen::Vector2d slide_I =
+        contacts_[0].frictionless ? Eigen::Vector2d::Zero() : laws.direction[0];
+    const Eigen::Vector2d slide_C =
+        contacts_[1].frictionless ? Eigen::Vector2d::Zero() : laws.direction[1];
     Friction f;
     if (stick_I && stick_C) {  // the x pair gives 0, the y pair a 2x2 solve
       const double det = 3.5 * (s * s + 2.5) - (2.5 - s) * (2.5 - s);
@@ -303,7 +330,8 @@ class ExactImpact {
   // The direction phi* a held contact k slides along when its cone cannot hold it: the slip it then
   // makes grows along phi* (cross(phi*, du_k/dP) = 0 with du_k/dP . phi* > 0). Newton on the angle
   // from `guess`; returns false if that does not converge to such a direction.
-  bool creepDirection(int k, Laws laws, const Eigen::Vector2d& guess, Eigen::Vector2d* result) const {
+  bool creepDirection(int k, Laws laws, const Eigen::Vector2d& guess,
+                      Eigen::Vector2d* result) const {
     laws.stick[k] = false;
     auto turn = [&](double phi, double* growth) {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
@@ -314,8 +342,9 @@ class ExactImpact {
     double phi = std::atan2(guess.y(), guess.x());
     for (int it = 0; it < kMaxCreepIterations; ++it) {
       const double value = turn(phi, nullptr);
-      const double slope = (turn(phi + kCreepAngleStep, nullptr) - turn(phi - kCreepAngleStep, nullptr)) /
-                           (2 * kCreepAngleStep);
+      const double slope =
+          (turn(phi + kCreepAngleStep, nullptr) - turn(phi - kCreepAngleStep, nullptr)) /
+          (2 * kCreepAngleStep);
       if (!(slope != 0)) break;
       const double change = std::clamp(-value / slope, -kCreepMaxTurn, kCreepMaxTurn);
       phi += change;
@@ -338,7 +367,9 @@ class ExactImpact {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
       return slipRate(k, frictionFor(laws));
     };
-    auto turn = [&](double phi) { return cross(Eigen::Vector2d(std::cos(phi), std::sin(phi)), rateAlong(phi)); };
+    auto turn = [&](double phi) {
+      return cross(Eigen::Vector2d(std::cos(phi), std::sin(phi)), rateAlong(phi));
+    };
     const double spacing = 2 * M_PI / kDirectionSamples;
     std::array<double, kDirectionSamples + 1> turns;
     for (int i = 0; i <= kDirectionSamples; ++i) turns[i] = turn(i * spacing);
@@ -414,7 +445,8 @@ class ExactImpact {
     double sigma_numerator = 1, sigma_denominator = 1, fax = 0, fay = 0, fbx = 0, fby = 0;
     if (slipping(0)) {
       const double ux = slip0_[0].x() - (3.5 * ax + coupling_x_ * bx) * inverse_mass_;
-      const double uy = slip0_[0].y() - (diagonal_y_ * ay + coupling_y_ * by - s_ * c_ * P) * inverse_mass_;
+      const double uy =
+          slip0_[0].y() - (diagonal_y_ * ay + coupling_y_ * by - s_ * c_ * P) * inverse_mass_;
       const double speed = std::sqrt(ux * ux + uy * uy);
       if (speed > 0) {
         const double scale = mu_[0] / speed;
@@ -459,45 +491,51 @@ class ExactImpact {
     const State k6 = rate(z + h * (a61 * k1 + a64 * k4 + a65 * k5));
     const State k7 = rate(z + h * (a71 * k1 + a74 * k4 + a75 * k5 + a76 * k6));
     const State k8 = rate(z + h * (a81 * k1 + a84 * k4 + a85 * k5 + a86 * k6 + a87 * k7));
-    const State k9 = rate(z + h * (a91 * k1 + a94 * k4 + a95 * k5 + a96 * k6 + a97 * k7 + a98 * k8));
-    const State k10 =
-        rate(z + h * (a101 * k1 + a104 * k4 + a105 * k5 + a106 * k6 + a107 * k7 + a108 * k8 + a109 * k9));
-    const State k11 = rate(z + h * (a111 * k1 + a114 * k4 + a115 * k5 + a116 * k6 + a117 * k7 + a118 * k8 +
-                                    a119 * k9 + a1110 * k10));
-    const State k12 = rate(z + h * (a121 * k1 + a124 * k4 + a125 * k5 + a126 * k6 + a127 * k7 + a128 * k8 +
-                                    a129 * k9 + a1210 * k10 + a1211 * k11));
-    const State slope = b1 * k1 + b6 * k6 + b7 * k7 + b8 * k8 + b9 * k9 + b10 * k10 + b11 * k11 + b12 * k12;
+    const State k9 =
+        rate(z + h * (a91 * k1 + a94 * k4 + a95 * k5 + a96 * k6 + a97 * k7 + a98 * k8));
+    const State k10 = rate(z + h * (a101 * k1 + a104 * k4 + a105 * k5 + a106 * k6 + a107 * k7 +
+                                    a108 * k8 + a109 * k9));
+    const State k11 = rate(z + h * (a111 * k1 + a114 * k4 + a115 * k5 + a116 * k6 + a117 * k7 +
+                                    a118 * k8 + a119 * k9 + a1110 * k10));
+    const State k12 = rate(z + h * (a121 * k1 + a124 * k4 + a125 * k5 + a126 * k6 + a127 * k7 +
+                                    a128 * k8 + a129 * k9 + a1210 * k10 + a1211 * k11));
+    const State slope =
+        b1 * k1 + b6 * k6 + b7 * k7 + b8 * k8 + b9 * k9 + b10 * k10 + b11 * k11 + b12 * k12;
     Step step;
     step.z = z + h * slope;
     step.rate_at_end = rate(step.z);
     // Combined estimate: |h| e5^2 / sqrt(n (e5^2 + w e3^2)), the norms scaled by the tolerances.
     const State third = (slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12).cwiseQuotient(error_scale_);
-    const State fifth = (er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 + er11 * k11 +
-                         er12 * k12).cwiseQuotient(error_scale_);
+    const State fifth = (er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 +
+                         er11 * k11 + er12 * k12)
+                            .cwiseQuotient(error_scale_);
     const double fifth_squared = fifth.squaredNorm(), third_squared = third.squaredNorm();
     double denominator = fifth_squared + kThirdOrderWeight * third_squared;
     if (!(denominator > 0)) denominator = 1;
-    const double error = std::abs(h) * fifth_squared / std::sqrt(State::RowsAtCompileTime * denominator);
-    // Error per unit step: a step may add error in proportion to the share of the impact's impulse it
-    // covers, so the errors of many steps add up to about the tolerance, not to their number times it.
+    const double error =
+        std::abs(h) * fifth_squared / std::sqrt(State::RowsAtCompileTime * denominator);
+    // Error per unit step: a step may add error in proportion to the share of the impact's impulse
+    // it covers, so the errors of many steps add up to about the tolerance, not to their number
+    // times it.
     const double share = std::max(std::abs(step.z[kP] - z[kP]) / impulse_scale_, kMinErrorShare);
     step.error = error / share;
     return step;
   }
 
   // Located events, each a function positive before it: the end of the phase (v_y in compression,
-  // W - (1 - e^2) W_c in restitution), and for a held contact the instants its cone stops holding it
-  // (it starts to slide along phi*) and holds it again (the margin of its needed friction).
+  // W - (1 - e^2) W_c in restitution), and for a held contact the instants its cone stops holding
+  // it (it starts to slide along phi*) and holds it again (the margin of its needed friction).
   struct Event {
     bool phase_end = true;
-    int contact = 0;     // for a held contact's events
-    double sign = 1;     // +1: its cone stops holding it; -1: its cone holds it again
+    int contact = 0;  // for a held contact's events
+    double sign = 1;  // +1: its cone stops holding it; -1: its cone holds it again
   };
   double eventValue(const Event& event, const State& z) const {
     if (event.phase_end) return compressing_ ? normalVelocity(z) : z[kWork] - work_target_;
     return event.sign * neededMargin(event.contact, z);
   }
-  double eventSlope(const Event& event, const State& r) const {  // d/dtau from the rate there; -1: none
+  double eventSlope(const Event& event,
+                    const State& r) const {  // d/dtau from the rate there; -1: none
     if (!event.phase_end) return -1;
     return compressing_ ? -(c_ * r[kP] - s_ * r[kAy] + r[kBy]) / M_ : r[kWork];
   }
@@ -512,17 +550,18 @@ class ExactImpact {
     Laws laws;
     for (int j = 0; j < 2; ++j) {
       laws.stick[j] = held(j);
-      laws.direction[j] = u[j].norm() > 0 ? Eigen::Vector2d(u[j].normalized()) : contacts_[j].direction;
+      laws.direction[j] =
+          u[j].norm() > 0 ? Eigen::Vector2d(u[j].normalized()) : contacts_[j].direction;
     }
     return coneMargin(k, frictionFor(laws));
   }
 
   // Finds the step length in [0, h] that lands on an event the full step crossed: Newton on the
-  // length where the event has a slope (each trial a full Runge-Kutta step, whose end rate gives the
-  // next slope), Illinois regula falsi otherwise. Returns false, with *length set to a shorter step to
-  // take instead, when a trial breaks the error tolerance.
-  bool locate(const Event& event, const State& z, const State& k1, double h, const Step& full, double* length,
-              Step* landed) {
+  // length where the event has a slope (each trial a full Runge-Kutta step, whose end rate gives
+  // the next slope), Illinois regula falsi otherwise. Returns false, with *length set to a shorter
+  // step to take instead, when a trial breaks the error tolerance.
+  bool locate(const Event& event, const State& z, const State& k1, double h, const Step& full,
+              double* length, Step* landed) {
     const double tolerance_g = eventTolerance(event);
     double lo = 0, g_lo = eventValue(event, z);
     double hi = h, g_hi = eventValue(event, full.z);
@@ -541,10 +580,12 @@ class ExactImpact {
     // events with a slope), else Newton from the start.
     double trial = newton(0, g_lo, eventSlope(event, k1));
     const double slope_lo = eventSlope(event, k1), slope_hi = eventSlope(event, full.rate_at_end);
-    if (event.phase_end && g_hi < 0) trial = h * hermiteRoot(g_lo, slope_lo * h, g_hi, slope_hi * h);
+    if (event.phase_end && g_hi < 0)
+      trial = h * hermiteRoot(g_lo, slope_lo * h, g_hi, slope_hi * h);
     int side = 0;
     for (int it = 0; it < kMaxEventIterations; ++it) {
-      if (!(trial > lo && trial < hi) && g_lo > g_hi) trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
+      if (!(trial > lo && trial < hi) && g_lo > g_hi)
+        trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
       if (!(trial > lo && trial < hi)) trial = 0.5 * (lo + hi);
       const Step attempt = rungeKuttaStep(z, k1, trial);
       if (attempt.error > 1) {
@@ -576,17 +617,20 @@ class ExactImpact {
     return false;
   }
 
-  void setSlip(int k, const State& z, const Eigen::Vector2d& target) { slip0_[k] += target - slip(k, z); }
+  void setSlip(int k, const State& z, const Eigen::Vector2d& target) {
+    slip0_[k] += target - slip(k, z);
+  }
 
   void setMode(int k, ContactMode mode) {
-    if (++changes_ > kMaxContactChanges) throw std::logic_error("cushion contacts changed state too often");
+    if (++changes_ > kMaxContactChanges)
+      throw std::logic_error("cushion contacts changed state too often");
     contacts_[k].mode = mode;
   }
 
   // Records the contacts' physical modes at z where they changed: a contact sticks while it is held
   // and its cone holds it, and slips otherwise (a held contact sliding along phi* slips). Between
-  // located instants (the start, the phase ends) a change is recorded at the end of the step in which
-  // it happened.
+  // located instants (the start, the phase ends) a change is recorded at the end of the step in
+  // which it happened.
   void reportModes(const State& z) {
     const Laws laws = lawsAt(slips(z), nullptr);
     for (int k = 0; k < 2; ++k) {
@@ -598,9 +642,9 @@ class ExactImpact {
     }
   }
 
-  // Holds contact k, whose slip has vanished: the leftover (below the vanishing threshold) is removed,
-  // and the search for phi* gets a first guess over the whole circle.
-  // After an accepted step: counts how long each slipping contact's slip has stayed small.
+  // Holds contact k, whose slip has vanished: the leftover (below the vanishing threshold) is
+  // removed, and the search for phi* gets a first guess over the whole circle. After an accepted
+  // step: counts how long each slipping contact's slip has stayed small.
   void countSmallSlips(const State& z) {
     const std::array<Eigen::Vector2d, 2> u = slips(z);
     for (int k = 0; k < 2; ++k) {
@@ -674,12 +718,14 @@ class ExactImpact {
       return h00 * z0[kP] + h10 * h * r0[kP] + h01 * z1[kP] + h11 * h * r1[kP];
     };
     const long evaluations = evaluations_;  // samples are not the solver's cost
-    for (double next = (std::floor(z0[kP] / spacing) + 1) * spacing; next < z1[kP]; next += spacing) {
+    for (double next = (std::floor(z0[kP] / spacing) + 1) * spacing; next < z1[kP];
+         next += spacing) {
       double lo = 0, hi = 1;
       for (int it = 0; it < 50; ++it) (P_at(0.5 * (lo + hi)) < next ? lo : hi) = 0.5 * (lo + hi);
       double length = 0.5 * (lo + hi) * h;
       Step sub = rungeKuttaStep(z0, r0, length);
-      for (int it = 0; it < 3 && sub.rate_at_end[kP] > 0 && sub.z[kP] != next; ++it) {  // Newton on P
+      for (int it = 0; it < 3 && sub.rate_at_end[kP] > 0 && sub.z[kP] != next;
+           ++it) {  // Newton on P
         length += (next - sub.z[kP]) / sub.rate_at_end[kP];
         sub = rungeKuttaStep(z0, r0, length);
       }
@@ -692,9 +738,10 @@ class ExactImpact {
   const BallVelocity incoming_;
   const ExactSolverOptions options_;
   double s_ = 0, c_ = 0, M_ = 0, inverse_mass_ = 0, vy0_ = 0, velocity_scale_ = 0;
-  double impulse_scale_ = 0;      // N s, M V
-  double vanished_slip_ = 0;      // m/s, kVanishedSlipFraction
-  double regularizing_slip_ = 0;  // m/s, s0 of the change of variable; also where held contacts slip
+  double impulse_scale_ = 0;  // N s, M V
+  double vanished_slip_ = 0;  // m/s, kVanishedSlipFraction
+  double regularizing_slip_ =
+      0;  // m/s, s0 of the change of variable; also where held contacts slip
   double creep_error_limit_ = 0;  // m/s, kCreepErrorFraction
   std::array<double, 2> mu_;
   std::array<Eigen::Vector2d, 2> slip0_;  // slips at P = 0, shifted by setSlip
@@ -733,24 +780,27 @@ CushionImpactResult ExactImpact::run() {
     if (steps == kMaxSteps) throw std::logic_error("exact cushion solver exceeded its step budget");
     // Contact changes due here. A slip that has decayed below the threshold has vanished: the
     // contact is held. A held contact slips as its own slip says once that slip is large enough for
-    // it (the regularizing slip), or as soon as its cone could hold it while it still slips (its slip
-    // then shrinks, which the change of variable follows).
+    // it (the regularizing slip), or as soon as its cone could hold it while it still slips (its
+    // slip then shrinks, which the change of variable follows).
     bool changed = false;
     const std::array<Eigen::Vector2d, 2> u = slips(z);
     for (int k = 0; k < 2; ++k) {
-      if (slipping(k) && (u[k].norm() <= vanished_slip_ || contacts_[k].small_slip_steps > kStagnantSlipSteps)) {
+      if (slipping(k) &&
+          (u[k].norm() <= vanished_slip_ || contacts_[k].small_slip_steps > kStagnantSlipSteps)) {
         hold(k, z);
         changed = true;
-      } else if (slipping(k) && u[k].norm() < kSteadyCreepFraction * regularizing_slip_ && slidesSteadily(k, u)) {
+      } else if (slipping(k) && u[k].norm() < kSteadyCreepFraction * regularizing_slip_ &&
+                 slidesSteadily(k, u)) {
         setMode(k, ContactMode::Stick);  // its slip stays as it is: it already lies along phi*
         changed = true;
       } else if (held(k) && u[k].norm() > kReleaseSlipMultiple * vanished_slip_) {
         const Laws laws = lawsAt(u, nullptr);
-        // While it slides along phi* the true slip lags phi* by an angle that grows with the slip, and
-        // the friction along phi* misses that lag: the error shows as the slip's own misalignment
-        // with phi*, which bounds how long the held law may run.
+        // While it slides along phi* the true slip lags phi* by an angle that grows with the slip,
+        // and the friction along phi* misses that lag: the error shows as the slip's own
+        // misalignment with phi*, which bounds how long the held law may run.
         const double misalignment = laws.stick[k] ? 0 : std::abs(cross(u[k], laws.direction[k]));
-        if (u[k].norm() >= regularizing_slip_ || laws.stick[k] || misalignment >= creep_error_limit_) {
+        if (u[k].norm() >= regularizing_slip_ || laws.stick[k] ||
+            misalignment >= creep_error_limit_) {
           contacts_[k].direction = u[k].normalized();
           setMode(k, ContactMode::Slip);
           changed = true;
@@ -764,7 +814,8 @@ CushionImpactResult ExactImpact::run() {
     std::vector<Event> events = {Event{}};
     for (int k = 0; k < 2; ++k) {
       if (!held(k)) continue;
-      // Armed only clear of the cone's edge, so that an event just applied cannot fire again at once.
+      // Armed only clear of the cone's edge, so that an event just applied cannot fire again at
+      // once.
       const double margin = neededMargin(k, z);
       const Event candidate{false, k, margin < 0 ? -1.0 : 1.0};
       if (std::abs(margin) > eventTolerance(candidate)) events.push_back(candidate);
@@ -841,13 +892,15 @@ CushionImpactResult ExactImpact::run() {
 
 }  // namespace
 
-CushionImpactResult solveCushionImpactExact(const CushionParams& params, const BallVelocity& incoming,
+CushionImpactResult solveCushionImpactExact(const CushionParams& params,
+                                            const BallVelocity& incoming,
                                             const ExactSolverOptions& options) {
   validateCushionParams(params);
   validateIncomingBall(incoming);
   if (!(options.tolerance >= kMinTolerance && options.tolerance <= kMaxTolerance)) {
-    rejectValue("exact solver tolerance", options.tolerance,
-                "it must lie in [" + valueText(kMinTolerance) + ", " + valueText(kMaxTolerance) + "]");
+    rejectValue(
+        "exact solver tolerance", options.tolerance,
+        "it must lie in [" + valueText(kMinTolerance) + ", " + valueText(kMaxTolerance) + "]");
   }
   if (!(options.trace_spacing_Ns >= 0) || !std::isfinite(options.trace_spacing_Ns)) {
     rejectValue("trace spacing (N s)", options.trace_spacing_Ns, "it must be a finite number >= 0");

@@ -1,11 +1,12 @@
 // An accurate solver for the seed paper's cushion impact. It integrates the impact with an adaptive
-// Dormand-Prince 8(5,3) pair and locates exactly (to the tolerance) the end of compression, the end of
-// restitution and every instant at which a stuck contact starts to slide or is held again, so nothing
-// chatters: a contact whose slip vanishes sticks while the friction needed to hold it lies inside its
-// friction cone, and otherwise slides along the one direction in which its slip grows along itself.
-// Near a vanishing slip, where the friction direction turns arbitrarily fast, the independent variable
-// is rescaled so that the slip decays smoothly instead of being stepped across. See the top of
-// cushion_exact_solver.cpp for the method and docs/cushion.md for its derivation.
+// Dormand-Prince 8(5,3) pair and locates exactly (to the tolerance) the end of compression, the end
+// of restitution and every instant at which a stuck contact starts to slide or is held again, so
+// nothing chatters: a contact whose slip vanishes sticks while the friction needed to hold it lies
+// inside its friction cone, and otherwise slides along the one direction in which its slip grows
+// along itself. Near a vanishing slip, where the friction direction turns arbitrarily fast, the
+// independent variable is rescaled so that the slip decays smoothly instead of being stepped
+// across. See the top of cushion_exact_solver.cpp for the method and docs/cushion.md for its
+// derivation.
 #pragma once
 
 #include "physics/cushion_model.h"
@@ -18,12 +19,14 @@ struct ExactSolverOptions {
   // default keeps output velocities within 1e-9 V0 of the converged solution: over 3000 seeded
   // impacts the largest error was 4.2e-10 V0 (tests and `baize bench cushion` check it).
   double tolerance = 3e-11;
-  // > 0: record result.trace with samples at least this dense in P (N s), plus every step and event.
+  // > 0: record result.trace with samples at least this dense in P (N s), plus every step and
+  // event.
   double trace_spacing_Ns = 0;
 };
 
 // Throws std::invalid_argument on invalid parameters, incoming state or options.
-CushionImpactResult solveCushionImpactExact(const CushionParams& params, const BallVelocity& incoming,
+CushionImpactResult solveCushionImpactExact(const CushionParams& params,
+                                            const BallVelocity& incoming,
                                             const ExactSolverOptions& options = {});
 
 }  // namespace baize::physics

@@ -1,9 +1,9 @@
 #include "physics/cushion_model.h"
 
-#include "physics/value_text.h"
-
 #include <cmath>
 #include <stdexcept>
+
+#include "physics/value_text.h"
 
 namespace baize::physics {
 double contactSinTheta(const CushionParams& params) {
@@ -21,8 +21,8 @@ void validateCushionParams(const CushionParams& p) {
   if (p.radius_m <= 0) rejectValue("ball radius (m)", p.radius_m, "it must be > 0");
   if (!(p.contact_height_m > p.radius_m && p.contact_height_m < 2 * p.radius_m)) {
     rejectValue("cushion contact height h (m)", p.contact_height_m,
-           "it must lie strictly between R = " + valueText(p.radius_m) + " and 2R = " +
-               valueText(2 * p.radius_m) + " (the nose touches the upper half of the ball)");
+                "it must lie strictly between R = " + valueText(p.radius_m) + " and 2R = " +
+                    valueText(2 * p.radius_m) + " (the nose touches the upper half of the ball)");
   }
   if (!(p.restitution > 0 && p.restitution <= 1)) {
     rejectValue("cushion restitution e_e", p.restitution, "it must lie in (0, 1]");
@@ -31,9 +31,10 @@ void validateCushionParams(const CushionParams& p) {
   const double c = std::sqrt(1 - s * s);
   const double tan_theta = s / c;
   if (!(p.cushion_friction >= 0 && p.cushion_friction < tan_theta)) {
-    rejectValue("cushion friction mu_w", p.cushion_friction,
-           "it must lie in [0, tan(theta)) = [0, " + valueText(tan_theta) +
-               ") for this contact height, or the table's reaction on the ball turns negative");
+    rejectValue(
+        "cushion friction mu_w", p.cushion_friction,
+        "it must lie in [0, tan(theta)) = [0, " + valueText(tan_theta) +
+            ") for this contact height, or the table's reaction on the ball turns negative");
   }
   // Below 1 the stick equations stay well posed; real cloth is 0.15 to 0.4.
   if (!(p.cloth_friction >= 0 && p.cloth_friction < 1)) {
@@ -45,9 +46,10 @@ void validateCushionParams(const CushionParams& p) {
       c - p.cushion_friction * s - p.cloth_friction * (s + p.cushion_friction * c);
   if (!(worst_normal_rate > 0)) {
     rejectValue("cloth friction mu_s", p.cloth_friction,
-           "with mu_w = " + valueText(p.cushion_friction) + " and sin(theta) = " + valueText(s) +
-               " it must be below " + valueText((c - p.cushion_friction * s) / (s + p.cushion_friction * c)) +
-               ", or friction could hold the ball against the cushion");
+                "with mu_w = " + valueText(p.cushion_friction) +
+                    " and sin(theta) = " + valueText(s) + " it must be below " +
+                    valueText((c - p.cushion_friction * s) / (s + p.cushion_friction * c)) +
+                    ", or friction could hold the ball against the cushion");
   }
 }
 
@@ -63,13 +65,21 @@ BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_rad
 void validateIncomingBall(const BallVelocity& ball) {
   const char* names[] = {"v_x", "v_y", "v_z", "w_x", "w_y", "w_z"};
   for (int i = 0; i < 3; ++i) {
-    requireFinite(std::string("incoming ") + names[i] + " (m/s)", ball.v[i]);
-    requireFinite(std::string("incoming ") + names[i + 3] + " (rad/s)", ball.w[i]);
+    if (!std::isfinite(ball.v[i])) {
+      rejectValue(std::string("incoming ") + names[i] + " (m/s)", ball.v[i],
+                  "it must be a finite number");
+    }
+    if (!std::isfinite(ball.w[i])) {
+      rejectValue(std::string("incoming ") + names[i + 3] + " (rad/s)", ball.w[i],
+                  "it must be a finite number");
+    }
   }
-  if (ball.v.z() != 0) rejectValue("incoming v_z (m/s)", ball.v.z(), "the ball must be on the table (0)");
+  if (ball.v.z() != 0)
+    rejectValue("incoming v_z (m/s)", ball.v.z(), "the ball must be on the table (0)");
   if (!(ball.v.y() > 0)) {
-    rejectValue("incoming v_y (m/s)", ball.v.y(),
-           "the ball must move into the cushion (v_y > 0; the angle must lie in (0, 180) degrees)");
+    rejectValue(
+        "incoming v_y (m/s)", ball.v.y(),
+        "the ball must move into the cushion (v_y > 0; the angle must lie in (0, 180) degrees)");
   }
 }
 

@@ -16,14 +16,16 @@
 
 namespace baize::physics {
 
-// Constants of one impact; they never change while it runs. Defaults: the seed paper's snooker values.
+// Constants of one impact; they never change while it runs. Defaults: the seed paper's snooker
+// values.
 struct CushionParams {
   double mass_kg = 0.1406;
   double radius_m = 0.02625;
-  double contact_height_m = 0.02625 * 7.0 / 5.0;  // nose height above the slate; h = 7R/5 in the paper
-  double restitution = 0.98;                      // e_e, energetic coefficient (Stronge), in (0, 1]
-  double cushion_friction = 0.14;                 // mu_w, ball on cushion nose
-  double cloth_friction = 0.212;                  // mu_s, ball on cloth
+  double contact_height_m =
+      0.02625 * 7.0 / 5.0;         // nose height above the slate; h = 7R/5 in the paper
+  double restitution = 0.98;       // e_e, energetic coefficient (Stronge), in (0, 1]
+  double cushion_friction = 0.14;  // mu_w, ball on cushion nose
+  double cloth_friction = 0.212;   // mu_s, ball on cloth
 };
 
 // sin(theta) = (h - R) / R: theta is the angle of the contact normal at I above the horizontal.
@@ -62,7 +64,8 @@ Eigen::Vector2d clothSlip(const CushionParams& params, const BallVelocity& ball)
 // friction impulses -cushion_friction_impulse (in the basis x, Y' at I) and -cloth_friction_impulse
 // (in x, y at C) act, the table's normal impulse being whatever keeps v_z at 0 (eq. 3d). Linear in
 // all three; with the friction impulses written as mu_w (cos Phi, sin Phi) dP and
-// mu_s (sin th + mu_w sin Phi cos th) (cos Phi', sin Phi') dP it gives eq. 14a and its five partners.
+// mu_s (sin th + mu_w sin Phi cos th) (cos Phi', sin Phi') dP it gives eq. 14a and its five
+// partners.
 BallVelocity impulseResponse(const CushionParams& params, double normal_impulse_Ns,
                              const Eigen::Vector2d& cushion_friction_impulse_Ns,
                              const Eigen::Vector2d& cloth_friction_impulse_Ns);
@@ -82,21 +85,21 @@ struct ContactChange {
 
 // The ball's state part way through the impact (for slip-against-impulse plots).
 struct ImpactSample {
-  double impulse_Ns = 0;      // P
+  double impulse_Ns = 0;  // P
   BallVelocity ball;
-  double normal_work_J = 0;   // W(P): work of the normal impulse at I, positive while compressing
+  double normal_work_J = 0;  // W(P): work of the normal impulse at I, positive while compressing
   Eigen::Vector2d cushion_slip = Eigen::Vector2d::Zero();  // (s_x, s_y') at I
   Eigen::Vector2d cloth_slip = Eigen::Vector2d::Zero();    // (s'_x, s'_y) at C
 };
 
 struct CushionImpactResult {
-  BallVelocity after;                  // outgoing state, local cushion frame
-  double compression_impulse_Ns = 0;   // P_c: normal impulse at I when compression ends
-  double final_impulse_Ns = 0;         // P_f: normal impulse at I when the impact ends
-  double compression_work_J = 0;       // W_c: work of the normal force at I during compression
+  BallVelocity after;                 // outgoing state, local cushion frame
+  double compression_impulse_Ns = 0;  // P_c: normal impulse at I when compression ends
+  double final_impulse_Ns = 0;        // P_f: normal impulse at I when the impact ends
+  double compression_work_J = 0;      // W_c: work of the normal force at I during compression
   std::vector<ContactChange> contact_changes;  // initial modes, then every stick/slip change
-  long rhs_evaluations = 0;            // cost: evaluations of the rates dy/dP
-  std::vector<ImpactSample> trace;     // only when the solver options ask for it
+  long rhs_evaluations = 0;                    // cost: evaluations of the rates dy/dP
+  std::vector<ImpactSample> trace;             // only when the solver options ask for it
 };
 
 }  // namespace baize::physics

@@ -1,21 +1,23 @@
 #include "physics/cushion_paper_solver.h"
 
-#include "physics/value_text.h"
-
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "physics/value_text.h"
+
 namespace baize::physics {
 namespace {
 
-ImpactSample sampleOf(const CushionParams& params, double P, const BallVelocity& ball, double work) {
+ImpactSample sampleOf(const CushionParams& params, double P, const BallVelocity& ball,
+                      double work) {
   return {P, ball, work, cushionSlip(params, ball), clothSlip(params, ball)};
 }
 
 }  // namespace
 
-CushionImpactResult solveCushionImpactPaper(const CushionParams& params, const BallVelocity& incoming,
+CushionImpactResult solveCushionImpactPaper(const CushionParams& params,
+                                            const BallVelocity& incoming,
                                             const PaperSolverOptions& options) {
   validateCushionParams(params);
   validateIncomingBall(incoming);
@@ -41,8 +43,8 @@ CushionImpactResult solveCushionImpactPaper(const CushionParams& params, const B
   // The increment's constant factors, hoisted out of the loop (eq. 14a and its partners with the
   // friction directions frozen over the increment; see impulseResponse).
   const double R = params.radius_m;
-  const double linear = dP / params.mass_kg;                 // dv per unit friction coefficient
-  const double angular = 5 * dP / (2 * params.mass_kg * R);  // dw per unit friction coefficient
+  const double linear = dP / params.mass_kg;                    // dv per unit friction coefficient
+  const double angular = 5 * dP / (2 * params.mass_kg * R);     // dw per unit friction coefficient
   auto unit = [](double x, double y, double* ux, double* uy) {  // zero when there is no slip
     const double size = std::sqrt(x * x + y * y);
     *ux = size > 0 ? x / size : 0;
@@ -54,7 +56,7 @@ CushionImpactResult solveCushionImpactPaper(const CushionParams& params, const B
     Eigen::Vector3d& w = ball.w;
     double ix, iy, cx, cy;
     unit(v.x() + R * (w.y() * s - w.z() * c), -v.y() * s + R * w.x(), &ix, &iy);  // eq. 12a, 12b
-    unit(v.x() - R * w.y(), v.y() + R * w.x(), &cx, &cy);                          // eq. 13a, 13b
+    unit(v.x() - R * w.y(), v.y() + R * w.x(), &cx, &cy);                         // eq. 13a, 13b
     const double ax = mu_w * ix, ay = mu_w * iy;
     const double table_rate = s + c * ay;  // dP_C/dP, eq. 8
     const double bx = mu_s * table_rate * cx, by = mu_s * table_rate * cy;
