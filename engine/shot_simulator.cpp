@@ -53,6 +53,18 @@ PolynomialCoefficients squaredGap(const physics::PositionQuadratic& path,
           q.dot(q)};
 }
 
+// Whether gap polynomial p stays positive on [0, horizon] by the bound p(t) >= c0 - sum |c_k| T^k:
+// then it has no root there and the root finder need not run.
+bool staysApart(const PolynomialCoefficients& p, double horizon) {
+  if (!(p[0] > 0) || !std::isfinite(horizon)) return false;
+  double bound = 0, power = 1;
+  for (int k = 1; k < 5; ++k) {
+    power *= horizon;
+    bound += std::abs(p[k]) * power;
+  }
+  return p[0] - bound > 0;
+}
+
 // Furthest a ball can travel within dt along its current path, m (a bound, for skipping pairs).
 double reach(const physics::PositionQuadratic& path, double dt) {
   return path.linear_mps.norm() * dt + path.quadratic_mps2.norm() * dt * dt;
@@ -230,6 +242,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   std::vector<bool> dirty(n, true);
   std::vector<double> until(n, kInfinity);  // time from now to each ball's next state change
   std::vector<physics::PositionQuadratic> path(n);
+  std::vector<char> moves(n, 0);  // sliding or rolling now
 
   for (long count = 0;; ++count) {
     if (count == p.max_events) {
@@ -241,7 +254,18 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
       if (balls[i].pocketed) continue;
       until[i] = physics::timeToStateChange(p.cloth, balls[i].state);
       path[i] = physics::positionQuadratic(p.cloth, balls[i].state);
+      moves[i] = moving(p.cloth, balls[i].state);
     }
+    // The first closing root of a gap polynomial in [0, horizon]; a gap the cheap bound shows to
+    // stay open is counted as skipped instead of solved.
+    auto solve = [&](const PolynomialCoefficients& gap, double horizon) {
+      if (staysApart(gap, horizon)) {
+        ++result.skipped_predictions;
+        return physics::RootSearchResult{};
+      }
+      ++result.predictions;
+      return physics::firstClosingRoot(gap, 0, horizon);
+    };
     // A prediction made now: dt from now, stored as an absolute time (the just-resolved contact is
     // not found again at the same instant).
     auto absolute = [&](Candidate c) {
@@ -254,15 +278,14 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
       own[i] = Candidate{};
       if (balls[i].pocketed) continue;
       Candidate best_own{until[i], EventKind::StateChange, i};
-      if (moving(p.cloth, balls[i].state)) {
+      if (moves[i]) {
         const double horizon = until[i];
         for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) {
           const CushionSegment& c = table.cushions[k];
           const PolynomialCoefficients gap = {c.inward_normal.dot(path[i].constant_m - c.start) - R,
                                               c.inward_normal.dot(path[i].linear_mps),
                                               c.inward_normal.dot(path[i].quadratic_mps2), 0, 0};
-          ++result.predictions;
-          const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+          const physics::RootSearchResult hit = solve(gap, horizon);
           if (hit.outcome != physics::RootOutcome::Root) continue;
           const Eigen::Vector2d along = c.end - c.start;
           const double s = (path[i].at(hit.time) - c.start).dot(along) / along.squaredNorm();
@@ -272,11 +295,10 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         }
         for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
           const CushionArc& jaw = table.jaws[k];
-          ++result.predictions;
           const PolynomialCoefficients gap =
               squaredGap(path[i], jaw.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
                          jaw.radius_m + R);
-          const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+          const physics::RootSearchResult hit = solve(gap, horizon);
           const Candidate candidate{hit.time, EventKind::Jaw, i, -1, k};
           if (hit.outcome == physics::RootOutcome::Root && onArc(jaw, path[i].at(hit.time)) &&
               absolute(candidate).dt_s < kInfinity && candidate < best_own) {
@@ -285,11 +307,10 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         }
         for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
           const PocketCircle& pocket = table.pockets[k];
-          ++result.predictions;
           const PolynomialCoefficients gap =
               squaredGap(path[i], pocket.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
                          pocket.radius_m);
-          const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+          const physics::RootSearchResult hit = solve(gap, horizon);
           const Candidate candidate{hit.time, EventKind::Pocket, i, -1, k};
           if (hit.outcome == physics::RootOutcome::Root && candidate < best_own)
             best_own = candidate;
@@ -303,8 +324,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         Candidate& cached = pair[static_cast<std::size_t>(i) * n + j];
         cached = Candidate{};
         if (balls[i].pocketed || balls[j].pocketed) continue;
-        const bool i_moves = moving(p.cloth, balls[i].state),
-                   j_moves = moving(p.cloth, balls[j].state);
+        const bool i_moves = moves[i], j_moves = moves[j];
         if (!i_moves && !j_moves) {
           ++result.skipped_predictions;
           continue;
@@ -317,10 +337,9 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           ++result.skipped_predictions;
           continue;
         }
-        ++result.predictions;
         const PolynomialCoefficients gap = squaredGap(
             path[i], path[j].constant_m, path[j].linear_mps, path[j].quadratic_mps2, 2 * R);
-        const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+        const physics::RootSearchResult hit = solve(gap, horizon);
         if (hit.outcome == physics::RootOutcome::Root)
           cached = absolute({hit.time, EventKind::BallBall, i, j});
       }
