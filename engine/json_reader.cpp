@@ -10,9 +10,12 @@
 namespace baize::engine {
 namespace {
 
-// Numbers printed so that they read back exactly (and "nan", "inf" as such); the rest as JSON.
+// Values as JSON text (numbers in their shortest exact form); NaN and infinities, which JSON
+// cannot hold, as "nan" and "inf".
 std::string jsonText(const nlohmann::json& value) {
-  if (value.is_number_float()) return physics::valueText(value.get<double>());
+  if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+    return physics::valueText(value.get<double>());
+  }
   return value.dump();
 }
 
@@ -35,9 +38,10 @@ nlohmann::json JsonReader::parseFile(const std::string& file_path) {
   }
   try {
     return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& error) {
+  } catch (const nlohmann::json::exception& error) {
+    // Parse errors and numbers too large for a double (1e999) alike.
     throw std::invalid_argument(file_path + ": not valid JSON (" + error.what() +
-                                "): NaN and infinities cannot be written in JSON");
+                                ") is not allowed: it must be JSON with finite numbers");
   }
 }
 
