@@ -64,7 +64,9 @@ class BadBallSetFileTest : public ::testing::Test {
  protected:
   nlohmann::json document =
       nlohmann::json::parse(std::ifstream(assetsDirectory() + "/balls/pool.json"));
-  std::string path = ::testing::TempDir() + "bad_balls.json";
+  // One file per test: ctest runs tests in parallel processes.
+  std::string path = ::testing::TempDir() + "bad_balls_" +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json";
 
   std::string loadError() {
     std::ofstream(path) << document.dump(2);

@@ -328,7 +328,9 @@ class BadTableFileTest : public ::testing::Test {
  protected:
   nlohmann::json document = nlohmann::json::parse(
       std::ifstream(assetsDirectory() + "/tables/pool-9ft.json"));
-  std::string path = ::testing::TempDir() + "bad_table.json";
+  // One file per test: ctest runs tests in parallel processes.
+  std::string path = ::testing::TempDir() + "bad_table_" +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json";
 
   std::string loadError(const std::string& text) {
     std::ofstream(path) << text;
