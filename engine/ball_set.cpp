@@ -1,11 +1,11 @@
 #include "engine/ball_set.h"
 
-#include "engine/json_reader.h"
-#include "engine/table.h"
-
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
+
+#include "engine/json_reader.h"
+#include "engine/table.h"
 
 namespace baize::engine {
 namespace {

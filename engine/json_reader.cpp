@@ -1,11 +1,11 @@
 #include "engine/json_reader.h"
 
-#include "physics/value_text.h"
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+
+#include "physics/value_text.h"
 
 namespace baize::engine {
 namespace {
@@ -34,7 +34,8 @@ JsonReader::JsonReader(const nlohmann::json& object, std::string source, std::st
 nlohmann::json JsonReader::parseFile(const std::string& file_path) {
   std::ifstream in(file_path);
   if (!in) {
-    throw std::invalid_argument(file_path + ": the file cannot be opened: it must exist and be readable");
+    throw std::invalid_argument(file_path +
+                                ": the file cannot be opened: it must exist and be readable");
   }
   try {
     return nlohmann::json::parse(in);
@@ -50,16 +51,16 @@ std::string JsonReader::where(const std::string& key) const {
 }
 
 void JsonReader::reject(const std::string& key, const std::string& allowed) const {
-  throw std::invalid_argument(where(key) + " = " + jsonText(value(key)) + " is not allowed: " +
-                              allowed);
+  throw std::invalid_argument(where(key) + " = " + jsonText(value(key)) +
+                              " is not allowed: " + allowed);
 }
 
 void JsonReader::requireExactKeys(std::initializer_list<const char*> keys) const {
   std::string allowed;
   for (const char* key : keys) allowed += (allowed.empty() ? "" : ", ") + std::string(key);
   for (const auto& item : object_.items()) {
-    const bool known = std::any_of(keys.begin(), keys.end(),
-                                   [&](const char* key) { return item.key() == key; });
+    const bool known =
+        std::any_of(keys.begin(), keys.end(), [&](const char* key) { return item.key() == key; });
     if (!known) {
       throw std::invalid_argument(where(item.key()) + " = " + jsonText(item.value()) +
                                   " is not allowed: unknown key; the keys here are " + allowed);

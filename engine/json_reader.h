@@ -2,9 +2,8 @@
 // says what is allowed. One reader serves the table and ball-set loaders.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -29,8 +28,8 @@ class JsonReader {
   std::string text(const std::string& key) const;                     // a non-empty string
   bool boolean(const std::string& key) const;
   double finiteNumber(const std::string& key) const;
-  double positiveNumber(const std::string& key) const;  // finite and > 0
-  double nonNegativeNumber(const std::string& key) const;  // finite and >= 0
+  double positiveNumber(const std::string& key) const;          // finite and > 0
+  double nonNegativeNumber(const std::string& key) const;       // finite and >= 0
   int integer(const std::string& key, int min, int max) const;  // an integer in [min, max]
 
   // "source: path.key" for messages about a value that passed its own check but not a relation.

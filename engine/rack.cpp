@@ -1,10 +1,10 @@
 #include "engine/rack.h"
 
-#include "physics/value_text.h"
-
 #include <cmath>
 #include <random>
 #include <stdexcept>
+
+#include "physics/value_text.h"
 
 namespace baize::engine {
 namespace {
@@ -60,9 +60,9 @@ void validateOptions(const RackOptions& options) {
 
 void requireKind(const std::string& rack_name, const Table& table, TableKind kind) {
   if (table.kind != kind) {
-    throw std::invalid_argument("rack \"" + rack_name + "\" is not allowed on table \"" + table.name +
-                                "\": it needs a " + (kind == TableKind::Pool ? "pool" : "snooker") +
-                                " table");
+    throw std::invalid_argument("rack \"" + rack_name + "\" is not allowed on table \"" +
+                                table.name + "\": it needs a " +
+                                (kind == TableKind::Pool ? "pool" : "snooker") + " table");
   }
 }
 
@@ -96,7 +96,7 @@ std::vector<PlacedBall> placeRack(const std::string& rack_name, const Table& tab
                                   const BallSet& balls, const RackOptions& options) {
   validateOptions(options);
   const double spacing_m = 2 * balls.radius_m + options.gap_m;
-  std::vector<PlacedBall> placed;  // the cue ball, then the balls that may be jittered
+  std::vector<PlacedBall> placed;   // the cue ball, then the balls that may be jittered
   std::vector<PlacedBall> spotted;  // balls on their spots, never jittered
   if (rack_name == "8-ball" || rack_name == "9-ball" || rack_name == "10-ball") {
     requireKind(rack_name, table, TableKind::Pool);
@@ -105,7 +105,11 @@ std::vector<PlacedBall> placeRack(const std::string& rack_name, const Table& tab
     Rows rows;
     if (rack_name == "8-ball") {
       // 8 in the centre; the back corners a solid (6) and a stripe (12).
-      rows = {{"1"}, {"11", "5"}, {"2", "8", "10"}, {"9", "7", "14", "4"}, {"6", "15", "13", "3", "12"}};
+      rows = {{"1"},
+              {"11", "5"},
+              {"2", "8", "10"},
+              {"9", "7", "14", "4"},
+              {"6", "15", "13", "3", "12"}};
     } else if (rack_name == "9-ball") {
       rows = {{"1"}, {"2", "3"}, {"4", "9", "5"}, {"6", "7"}, {"8"}};
     } else {
@@ -117,8 +121,7 @@ std::vector<PlacedBall> placeRack(const std::string& rack_name, const Table& tab
   } else if (rack_name == "snooker") {
     requireKind(rack_name, table, TableKind::Snooker);
     const SnookerMarkings& markings = *table.snooker_markings;
-    placed.push_back(
-        {"cue", markings.brown_spot_m - Vector2d(markings.d_radius_m / 2, 0)});
+    placed.push_back({"cue", markings.brown_spot_m - Vector2d(markings.d_radius_m / 2, 0)});
     // The apex red as close behind the pink as the frozen gap allows.
     Rows reds;
     int red = 1;

@@ -7,15 +7,14 @@
 // sees a frozen rack.
 #pragma once
 
-#include "engine/ball_set.h"
-#include "engine/table.h"
-
 #include <Eigen/Core>
-
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "engine/ball_set.h"
+#include "engine/table.h"
 
 namespace baize::engine {
 
@@ -32,7 +31,7 @@ struct RackOptions {
 };
 
 struct PlacedBall {
-  std::string id;  // the ball set's id
+  std::string id;                                        // the ball set's id
   Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // table frame
 };
 

@@ -1,10 +1,10 @@
 #include "engine/table.h"
 
-#include "engine/json_reader.h"
-#include "physics/value_text.h"
-
 #include <cmath>
 #include <stdexcept>
+
+#include "engine/json_reader.h"
+#include "physics/value_text.h"
 
 namespace baize::engine {
 namespace {
@@ -35,8 +35,9 @@ PocketSpec readPocketSpec(const JsonReader& pocket) {
   // The rounding must end on the facing, not beyond it.
   const double tangent_distance_m = spec.jaw_radius_m / std::tan(spec.facing_angle_rad / 2);
   if (!(tangent_distance_m < spec.facing_length_m)) {
-    pocket.reject("jaw_radius_m", "the jaw rounding must end on the facing: jaw_radius_m / "
-                                  "tan(facing_angle / 2) must be less than facing_length_m");
+    pocket.reject("jaw_radius_m",
+                  "the jaw rounding must end on the facing: jaw_radius_m / "
+                  "tan(facing_angle / 2) must be less than facing_length_m");
   }
   return spec;
 }
@@ -149,9 +150,11 @@ void buildCushions(Table& table) {
   for (std::size_t k = 0; k < places.size(); ++k) {
     const int index = static_cast<int>(k);
     const JawGeometry& next_entry = entries[(k + 1) % places.size()];
-    table.cushions.push_back(segment(entries[k].facing_tangent_point, entries[k].facing_end, index));
+    table.cushions.push_back(
+        segment(entries[k].facing_tangent_point, entries[k].facing_end, index));
     table.cushions.push_back(segment(exits[k].facing_end, exits[k].facing_tangent_point, index));
-    table.cushions.push_back(segment(exits[k].rail_tangent_point, next_entry.rail_tangent_point, -1));
+    table.cushions.push_back(
+        segment(exits[k].rail_tangent_point, next_entry.rail_tangent_point, -1));
     table.jaw_arcs.push_back(entries[k].arc);
     table.jaw_arcs.push_back(exits[k].arc);
   }
@@ -166,25 +169,30 @@ void checkFacingsDoNotCross(const Table& table, const JsonReader& corner, const 
     const double exit_side = across.dot(table.cushions[3 * k + 1].start_m - pocket.mouth_centre_m);
     if (!(entry_side < 0 && exit_side > 0)) {
       (pocket.kind == PocketKind::Corner ? corner : side)
-          .reject("facing_length_m", "the two facings of a pocket converge and must end before "
-                                     "they meet on the pocket axis");
+          .reject("facing_length_m",
+                  "the two facings of a pocket converge and must end before "
+                  "they meet on the pocket axis");
     }
   }
 }
 
 void checkRailsRemain(const Table& table, const JsonReader& corner, const JsonReader& side) {
-  const double short_rail_m = table.width_m - 2 * railTakenByJaw(PocketKind::Corner, table.corner_pocket);
+  const double short_rail_m =
+      table.width_m - 2 * railTakenByJaw(PocketKind::Corner, table.corner_pocket);
   if (!(short_rail_m > 0)) {
-    corner.reject("mouth_width_m", "the corner mouths and jaw roundings take the whole short rail "
-                                   "(width " + physics::valueText(table.width_m) + " m)");
+    corner.reject("mouth_width_m",
+                  "the corner mouths and jaw roundings take the whole short rail "
+                  "(width " +
+                      physics::valueText(table.width_m) + " m)");
   }
   const double long_rail_m = table.length_m / 2 -
                              railTakenByJaw(PocketKind::Corner, table.corner_pocket) -
                              railTakenByJaw(PocketKind::Side, table.side_pocket);
   if (!(long_rail_m > 0)) {
-    side.reject("mouth_width_m", "the corner and side mouths and jaw roundings take the whole long "
-                                 "rail between them (half length " +
-                                     physics::valueText(table.length_m / 2) + " m)");
+    side.reject("mouth_width_m",
+                "the corner and side mouths and jaw roundings take the whole long "
+                "rail between them (half length " +
+                    physics::valueText(table.length_m / 2) + " m)");
   }
 }
 
@@ -198,11 +206,13 @@ PoolMarkings readPoolMarkings(const JsonReader& markings, const Table& table) {
   for (int i = 1; i <= count; ++i) {
     const double fraction = static_cast<double>(i) / (count + 1);
     // Long rails: two segments each (corner to side pocket); short rails: one segment.
-    for (const double y : {-half_width - pool.diamond_setback_m, half_width + pool.diamond_setback_m}) {
+    for (const double y :
+         {-half_width - pool.diamond_setback_m, half_width + pool.diamond_setback_m}) {
       pool.diamonds_m.emplace_back(-half_length + fraction * half_length, y);
       pool.diamonds_m.emplace_back(fraction * half_length, y);
     }
-    for (const double x : {-half_length - pool.diamond_setback_m, half_length + pool.diamond_setback_m}) {
+    for (const double x :
+         {-half_length - pool.diamond_setback_m, half_length + pool.diamond_setback_m}) {
       pool.diamonds_m.emplace_back(x, -half_width + fraction * table.width_m);
     }
   }
@@ -222,18 +232,21 @@ SnookerMarkings readSnookerMarkings(const JsonReader& markings, const Table& tab
   }
   const double d_radius_m = markings.positiveNumber("d_radius_m");
   if (!(d_radius_m < half_width && d_radius_m < baulk_m)) {
-    markings.reject("d_radius_m", "the D must fit on the table: less than half the width and "
-                                  "than the baulk line's distance from the bottom cushion");
+    markings.reject("d_radius_m",
+                    "the D must fit on the table: less than half the width and "
+                    "than the baulk line's distance from the bottom cushion");
   }
   const double black_m = markings.positiveNumber("black_spot_from_top_cushion_m");
   // The black spot lies between the pink spot (half way to the top cushion) and the top cushion.
   if (!(black_m < half_length / 2)) {
-    markings.reject("black_spot_from_top_cushion_m", "it must be less than a quarter of the length");
+    markings.reject("black_spot_from_top_cushion_m",
+                    "it must be less than a quarter of the length");
   }
   SnookerMarkings snooker;
   snooker.baulk_line_x_m = -half_length + baulk_m;
   snooker.d_radius_m = d_radius_m;
-  // Seen from the baulk end (looking along +x) the yellow is on the right (-y), the green on the left.
+  // Seen from the baulk end (looking along +x) the yellow is on the right (-y), the green on the
+  // left.
   snooker.yellow_spot_m = Vector2d(snooker.baulk_line_x_m, -d_radius_m);
   snooker.green_spot_m = Vector2d(snooker.baulk_line_x_m, d_radius_m);
   snooker.brown_spot_m = Vector2d(snooker.baulk_line_x_m, 0);
@@ -257,7 +270,8 @@ Table tableFromJson(const nlohmann::json& document, const std::string& source) {
   table.name = root.text("name");
   table.description = root.text("description");
   const std::string kind = root.text("kind");
-  if (kind != "pool" && kind != "snooker") root.reject("kind", "it must be \"pool\" or \"snooker\"");
+  if (kind != "pool" && kind != "snooker")
+    root.reject("kind", "it must be \"pool\" or \"snooker\"");
   table.kind = kind == "pool" ? TableKind::Pool : TableKind::Snooker;
 
   const JsonReader surface = root.object("playing_surface");
@@ -286,7 +300,9 @@ Table tableFromJson(const nlohmann::json& document, const std::string& source) {
   return table;
 }
 
-Table loadTable(const std::string& path) { return tableFromJson(JsonReader::parseFile(path), path); }
+Table loadTable(const std::string& path) {
+  return tableFromJson(JsonReader::parseFile(path), path);
+}
 
 std::string assetsDirectory() { return BAIZE_ASSETS_DIR; }
 
@@ -299,9 +315,10 @@ Table builtinTable(const std::string& name) {
     if (name == known) return loadTable(assetsDirectory() + "/tables/" + name + ".json");
   }
   std::string allowed;
-  for (const std::string& known : builtinTableNames()) allowed += (allowed.empty() ? "" : ", ") + known;
-  throw std::invalid_argument("table name \"" + name + "\" is not allowed: the built-in tables are " +
-                              allowed);
+  for (const std::string& known : builtinTableNames())
+    allowed += (allowed.empty() ? "" : ", ") + known;
+  throw std::invalid_argument("table name \"" + name +
+                              "\" is not allowed: the built-in tables are " + allowed);
 }
 
 }  // namespace baize::engine

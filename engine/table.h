@@ -8,9 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <nlohmann/json.hpp>
-
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,12 +20,12 @@ enum class PocketKind { Corner, Side };
 
 // The shape of one kind of pocket, as given in the file (angles already in radians).
 struct PocketSpec {
-  double mouth_width_m = 0;       // between the jaw tips (where rail and facing lines meet)
-  double facing_angle_rad = 0;    // between the rail nose and the facing, inside the cushion
-  double jaw_radius_m = 0;        // rounding of the jaw tip, tangent to rail and facing
-  double facing_length_m = 0;     // from the jaw tip along the facing
-  double capture_offset_m = 0;    // capture-circle centre behind the mouth, along the pocket axis
-  double capture_radius_m = 0;    // a ball whose centre enters the capture circle is pocketed
+  double mouth_width_m = 0;     // between the jaw tips (where rail and facing lines meet)
+  double facing_angle_rad = 0;  // between the rail nose and the facing, inside the cushion
+  double jaw_radius_m = 0;      // rounding of the jaw tip, tangent to rail and facing
+  double facing_length_m = 0;   // from the jaw tip along the facing
+  double capture_offset_m = 0;  // capture-circle centre behind the mouth, along the pocket axis
+  double capture_radius_m = 0;  // a ball whose centre enters the capture circle is pocketed
 };
 
 struct Circle {
@@ -67,7 +65,7 @@ struct Pocket {
 
 struct PoolMarkings {
   int diamonds_per_rail_segment = 0;
-  double diamond_setback_m = 0;  // from the cushion nose outwards to the diamond centre
+  double diamond_setback_m = 0;             // from the cushion nose outwards to the diamond centre
   std::vector<Eigen::Vector2d> diamonds_m;  // on the rail tops, outside the playing rectangle
   Eigen::Vector2d foot_spot_m = Eigen::Vector2d::Zero();  // centre of the foot half (+x)
   Eigen::Vector2d head_spot_m = Eigen::Vector2d::Zero();  // centre of the head half (-x)

@@ -1,14 +1,14 @@
 #include "engine/ball_set.h"
 
-#include "engine/table.h"
-#include "tests/engine/error_test_support.h"
-
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <limits>
 #include <set>
 #include <string>
+
+#include "engine/table.h"
+#include "tests/engine/error_test_support.h"
 
 namespace baize::engine {
 namespace {
@@ -46,7 +46,8 @@ TEST(BuiltinBallSets, SnookerSetIsTheCueBallFifteenRedsAndSixColours) {
   EXPECT_DOUBLE_EQ(set.mass_kg, 0.1406);
   ASSERT_EQ(set.balls.size(), 22u);
   std::set<std::string> red_colours;
-  for (int red = 1; red <= 15; ++red) red_colours.insert(set.ball("red" + std::to_string(red)).colour);
+  for (int red = 1; red <= 15; ++red)
+    red_colours.insert(set.ball("red" + std::to_string(red)).colour);
   EXPECT_EQ(red_colours.size(), 1u);
   std::set<std::string> colours(red_colours);
   for (const std::string id : {"cue", "yellow", "green", "brown", "blue", "pink", "black"}) {

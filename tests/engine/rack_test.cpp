@@ -1,7 +1,5 @@
 #include "engine/rack.h"
 
-#include "tests/engine/error_test_support.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +11,8 @@
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include "tests/engine/error_test_support.h"
 
 namespace baize::engine {
 namespace {
@@ -26,9 +26,9 @@ struct RackCase {
   std::string rack;
   std::string table;
   std::string balls;
-  std::size_t count;          // balls placed, cue ball included
-  std::size_t frozen_pairs;   // neighbour pairs at 2R + gap
-  std::size_t jittered;       // balls of the triangle or diamond
+  std::size_t count;         // balls placed, cue ball included
+  std::size_t frozen_pairs;  // neighbour pairs at 2R + gap
+  std::size_t jittered;      // balls of the triangle or diamond
 };
 
 void PrintTo(const RackCase& c, std::ostream* out) { *out << c.rack << " on " << c.table; }
@@ -170,7 +170,8 @@ TEST(PoolRacks, EightBallHasTheEightInTheCentreAndASolidAndAStripeInTheBackCorne
   EXPECT_EQ(positions.at("8").y(), 0);
   std::vector<const BallSpec*> corners;
   for (const PlacedBall& ball : placed) {
-    const bool back_row = std::abs(ball.position_m.x() - rowX(table, balls, 4)) <= kRoundingDistance_m;
+    const bool back_row =
+        std::abs(ball.position_m.x() - rowX(table, balls, 4)) <= kRoundingDistance_m;
     const bool outermost = std::abs(std::abs(ball.position_m.y()) -
                                     2 * (2 * balls.radius_m + kFrozenGap_m)) <= kRoundingDistance_m;
     if (back_row && outermost) corners.push_back(&balls.ball(ball.id));
@@ -225,7 +226,8 @@ TEST(RackErrors, BadNamesTablesBallSetsAndOptionsAreNamed) {
   const Table pool = builtinTable("pool-9ft");
   const Table snooker = builtinTable("snooker-12ft");
   const BallSet pool_balls = builtinBallSet("pool");
-  EXPECT_MENTIONS(invalidArgumentMessage([&] { placeRack("7-ball", pool, pool_balls); }), "\"7-ball\"");
+  EXPECT_MENTIONS(invalidArgumentMessage([&] { placeRack("7-ball", pool, pool_balls); }),
+                  "\"7-ball\"");
   EXPECT_MENTIONS(invalidArgumentMessage([&] { placeRack("8-ball", snooker, pool_balls); }),
                   "needs a pool table");
   EXPECT_MENTIONS(invalidArgumentMessage([&] { placeRack("snooker", snooker, pool_balls); }),

@@ -1,7 +1,5 @@
 #include "engine/table.h"
 
-#include "tests/engine/error_test_support.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +11,8 @@
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include "tests/engine/error_test_support.h"
 
 namespace baize::engine {
 namespace {
@@ -60,7 +60,7 @@ struct PocketOutline {
 
 PocketOutline outlineAround(const Table& table, std::size_t k) {
   const std::size_t previous = (k + table.pockets.size() - 1) % table.pockets.size();
-  return {table.cushions[3 * previous + 2], table.jaw_arcs[2 * k], table.cushions[3 * k],
+  return {table.cushions[3 * previous + 2], table.jaw_arcs[2 * k],     table.cushions[3 * k],
           table.cushions[3 * k + 1],        table.jaw_arcs[2 * k + 1], table.cushions[3 * k + 2]};
 }
 
@@ -174,7 +174,8 @@ TEST_P(BuiltinTableTest, MouthBetweenJawTipsIsTheStatedWidthAndFacingsMeetRailsA
     // Inside the cushion, between the rail nose running back and the facing running out.
     const Vector2d rail_back_in = outline.rail_in.start_m - outline.rail_in.end_m;
     const Vector2d facing_out_in = outline.entry_facing.end_m - outline.entry_facing.start_m;
-    EXPECT_NEAR(angleBetween(rail_back_in, facing_out_in), spec.facing_angle_rad, kRoundingAngle_rad);
+    EXPECT_NEAR(angleBetween(rail_back_in, facing_out_in), spec.facing_angle_rad,
+                kRoundingAngle_rad);
     const Vector2d rail_back_out = outline.rail_out.end_m - outline.rail_out.start_m;
     const Vector2d facing_out_out = outline.exit_facing.start_m - outline.exit_facing.end_m;
     EXPECT_NEAR(angleBetween(rail_back_out, facing_out_out), spec.facing_angle_rad,
@@ -197,7 +198,8 @@ TEST_P(BuiltinTableTest, CaptureCircleLiesBehindTheMouthOnThePocketAxis) {
 }
 
 // Each piece has its mirror image among the pieces.
-void expectMirrorSymmetric(const Table& table, const std::function<Vector2d(const Vector2d&)>& mirror) {
+void expectMirrorSymmetric(const Table& table,
+                           const std::function<Vector2d(const Vector2d&)>& mirror) {
   for (const CushionSegment& a : table.cushions) {
     int matches = 0;
     for (const CushionSegment& b : table.cushions) {
@@ -290,7 +292,8 @@ TEST(BuiltinTables, PoolDiamondsSitAtQuartersOfEachRailSegmentBehindTheNose) {
       EXPECT_NE(std::lround(eighths) % 4, 0);
     } else {
       ++on_short;
-      EXPECT_NEAR(std::abs(diamond.x()), half_length + markings.diamond_setback_m, kRoundingDistance_m);
+      EXPECT_NEAR(std::abs(diamond.x()), half_length + markings.diamond_setback_m,
+                  kRoundingDistance_m);
       const double quarters = diamond.y() / (table.width_m / 4);
       EXPECT_NEAR(quarters, std::round(quarters), 1e-9);
       EXPECT_LE(std::abs(std::lround(quarters)), 1);
@@ -326,8 +329,8 @@ TEST(BuiltinTables, UnknownNameIsRejectedWithTheKnownNames) {
 // Bad files: a shipped table changed in one place, written to a temporary file.
 class BadTableFileTest : public ::testing::Test {
  protected:
-  nlohmann::json document = nlohmann::json::parse(
-      std::ifstream(assetsDirectory() + "/tables/pool-9ft.json"));
+  nlohmann::json document =
+      nlohmann::json::parse(std::ifstream(assetsDirectory() + "/tables/pool-9ft.json"));
   // One file per test: ctest runs tests in parallel processes.
   std::string path = ::testing::TempDir() + "bad_table_" +
                      ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json";
@@ -401,7 +404,8 @@ TEST_F(BadTableFileTest, NumberTooLargeForADoubleIsRejected) {
 
 TEST_F(BadTableFileTest, NonFiniteValueInADocumentIsNamed) {
   document["corner_pocket"]["mouth_width_m"] = std::numeric_limits<double>::quiet_NaN();
-  const std::string message = invalidArgumentMessage([&] { tableFromJson(document, "scene.json"); });
+  const std::string message =
+      invalidArgumentMessage([&] { tableFromJson(document, "scene.json"); });
   EXPECT_MENTIONS(message, "scene.json: corner_pocket.mouth_width_m = nan");
   EXPECT_MENTIONS(message, "finite");
 }
