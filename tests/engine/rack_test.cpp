@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "physics/value_text.h"
 #include "tests/engine/error_test_support.h"
 
 namespace baize::engine {
@@ -242,7 +243,7 @@ TEST(RackErrors, BadNamesTablesBallSetsAndOptionsAreNamed) {
   options.gap_m = 1e-6;
   options.jitter_radius_m = 6e-7;
   EXPECT_MENTIONS(invalidArgumentMessage([&] { placeRack("8-ball", pool, pool_balls, options); }),
-                  "jitter_radius_m = 5.9999999999999997e-07");
+                  "jitter_radius_m = " + physics::valueText(6e-7));
 }
 
 TEST(RackErrors, ARackThatDoesNotFitTheTableIsRejected) {
