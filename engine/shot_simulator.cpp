@@ -90,8 +90,8 @@ struct CushionFrame {
 };
 
 // Whether the direction from a jaw's centre to point q lies within the jaw's angular range.
-bool onArc(const CushionArc& jaw, const Eigen::Vector2d& q) {
-  double angle = std::atan2(q.y() - jaw.centre.y(), q.x() - jaw.centre.x());
+bool onArc(const JawArc& jaw, const Eigen::Vector2d& q) {
+  double angle = std::atan2(q.y() - jaw.centre_m.y(), q.x() - jaw.centre_m.x());
   while (angle < jaw.start_angle_rad) angle += 2 * M_PI;
   return angle <= jaw.end_angle_rad;
 }
@@ -114,13 +114,13 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
   if (!(p.max_events > 0))
     physics::rejectValue("max_events", static_cast<double>(p.max_events), "it must be > 0");
   for (const CushionSegment& c : table.cushions) {
-    if (!(std::abs(c.inward_normal.norm() - 1) < 1e-9) || !((c.end - c.start).norm() > 0)) {
+    if (!(std::abs(c.inward_normal.norm() - 1) < 1e-9) || !((c.end_m - c.start_m).norm() > 0)) {
       throw std::invalid_argument(
           "cushion segment: it needs a unit inward normal and two distinct ends");
     }
   }
   for (std::size_t k = 0; k < table.jaws.size(); ++k) {
-    const CushionArc& jaw = table.jaws[k];
+    const JawArc& jaw = table.jaws[k];
     if (!(jaw.radius_m > 0) || !(jaw.end_angle_rad >= jaw.start_angle_rad) ||
         !(jaw.end_angle_rad - jaw.start_angle_rad <= 2 * M_PI)) {
       physics::rejectValue("jaw " + std::to_string(k) + " radius (m)", jaw.radius_m,
@@ -142,8 +142,8 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
       }
     }
     for (std::size_t k = 0; k < table.jaws.size(); ++k) {
-      const CushionArc& jaw = table.jaws[k];
-      const double distance = (balls[i].position - jaw.centre).norm();
+      const JawArc& jaw = table.jaws[k];
+      const double distance = (balls[i].position - jaw.centre_m).norm();
       if (onArc(jaw, balls[i].position) && distance < jaw.radius_m + R - kContactSlack_m) {
         physics::rejectValue(who + " is inside jaw " + std::to_string(k) +
                                  ": its centre's distance from the jaw's centre (m)",
@@ -152,9 +152,9 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
     }
     for (std::size_t k = 0; k < table.cushions.size(); ++k) {
       const CushionSegment& c = table.cushions[k];
-      const Eigen::Vector2d along = c.end - c.start;
-      const double s = (balls[i].position - c.start).dot(along) / along.squaredNorm();
-      const double distance = c.inward_normal.dot(balls[i].position - c.start);
+      const Eigen::Vector2d along = c.end_m - c.start_m;
+      const double s = (balls[i].position - c.start_m).dot(along) / along.squaredNorm();
+      const double distance = c.inward_normal.dot(balls[i].position - c.start_m);
       if (s >= 0 && s <= 1 && distance < R - kContactSlack_m) {
         physics::rejectValue(
             who + " is beyond cushion " + std::to_string(k) + ": its centre's distance from it (m)",
@@ -191,6 +191,14 @@ physics::BallState sampleTrajectory(const physics::ClothParams& cloth, const Tra
   --piece;  // the last piece starting at or before t_s (the first starts at 0)
   if (piece->pocketed) return piece->state;
   return physics::advance(cloth, piece->state, t_s - piece->start_time_s);
+}
+
+TableGeometry geometryOf(const Table& table) {
+  TableGeometry geometry;
+  geometry.cushions = table.cushions;
+  geometry.jaws = table.jaw_arcs;
+  for (const Pocket& pocket : table.pockets) geometry.pockets.push_back(pocket.capture);
+  return geometry;
 }
 
 SimulationParams poolSimulationParams() {
@@ -282,21 +290,22 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         const double horizon = until[i];
         for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) {
           const CushionSegment& c = table.cushions[k];
-          const PolynomialCoefficients gap = {c.inward_normal.dot(path[i].constant_m - c.start) - R,
-                                              c.inward_normal.dot(path[i].linear_mps),
-                                              c.inward_normal.dot(path[i].quadratic_mps2), 0, 0};
+          const PolynomialCoefficients gap = {
+              c.inward_normal.dot(path[i].constant_m - c.start_m) - R,
+              c.inward_normal.dot(path[i].linear_mps), c.inward_normal.dot(path[i].quadratic_mps2),
+              0, 0};
           const physics::RootSearchResult hit = solve(gap, horizon);
           if (hit.outcome != physics::RootOutcome::Root) continue;
-          const Eigen::Vector2d along = c.end - c.start;
-          const double s = (path[i].at(hit.time) - c.start).dot(along) / along.squaredNorm();
+          const Eigen::Vector2d along = c.end_m - c.start_m;
+          const double s = (path[i].at(hit.time) - c.start_m).dot(along) / along.squaredNorm();
           const Candidate candidate{hit.time, EventKind::Cushion, i, -1, k};
           if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < best_own)
             best_own = candidate;
         }
         for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
-          const CushionArc& jaw = table.jaws[k];
+          const JawArc& jaw = table.jaws[k];
           const PolynomialCoefficients gap =
-              squaredGap(path[i], jaw.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+              squaredGap(path[i], jaw.centre_m, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
                          jaw.radius_m + R);
           const physics::RootSearchResult hit = solve(gap, horizon);
           const Candidate candidate{hit.time, EventKind::Jaw, i, -1, k};
@@ -306,9 +315,9 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           }
         }
         for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
-          const PocketCircle& pocket = table.pockets[k];
+          const Circle& pocket = table.pockets[k];
           const PolynomialCoefficients gap =
-              squaredGap(path[i], pocket.centre, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+              squaredGap(path[i], pocket.centre_m, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
                          pocket.radius_m);
           const physics::RootSearchResult hit = solve(gap, horizon);
           const Candidate candidate{hit.time, EventKind::Pocket, i, -1, k};
@@ -390,7 +399,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         const Eigen::Vector2d normal =
             best.kind == EventKind::Cushion
                 ? table.cushions[best.index].inward_normal
-                : Eigen::Vector2d((a.position - table.jaws[best.index].centre).normalized());
+                : Eigen::Vector2d((a.position - table.jaws[best.index].centre_m).normalized());
         const CushionFrame frame(normal);
         const physics::BallVelocity local = frame.toLocal(a);
         if (local.v.y() > 0) {

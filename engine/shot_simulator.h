@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/table.h"
 #include "physics/ball_ball_impact.h"
 #include "physics/cloth_motion.h"
 #include "physics/cushion_exact_solver.h"
@@ -18,38 +19,20 @@
 
 namespace baize::engine {
 
-// A straight cushion: the line the cushion's nose runs along at contact height, between two ends,
-// with the unit normal pointing into the playing area. A ball touches it when its centre is R from
-// the line (measured along the normal) and its contact point lies between the ends.
-struct CushionSegment {
-  Eigen::Vector2d start = Eigen::Vector2d::Zero();  // m
-  Eigen::Vector2d end = Eigen::Vector2d::Zero();    // m
-  Eigen::Vector2d inward_normal = Eigen::Vector2d::UnitY();
-};
-
-// A rounded cushion (a pocket's jaw tip): a circular arc of the nose line, centre and radius in the
-// table plane, over the directions from the centre between start_angle and end_angle (rad,
-// counter-clockwise from +x; end_angle may exceed pi). A ball touches it when its centre is
-// radius + R from the centre in a direction within that range; the contact normal points from the
-// centre to the ball.
-struct CushionArc {
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // m
-  double radius_m = 0;
-  double start_angle_rad = 0;
-  double end_angle_rad = 0;
-};
-
-// A ball whose centre enters this circle has fallen into the pocket.
-struct PocketCircle {
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // m
-  double radius_m = 0;
-};
-
+// What the event loop needs of a table (types from engine/table.h): straight cushion noses with
+// inward normals, jaw arcs touched from outside, and the pockets' capture circles (a ball whose
+// centre enters one has fallen in). A ball touches a straight cushion when its centre is R from the
+// line along the normal with its contact point between the ends, and a jaw when its centre is
+// radius + R from the jaw's centre in a direction within the jaw's angular range (the contact
+// normal then points from that centre to the ball).
 struct TableGeometry {
   std::vector<CushionSegment> cushions;
-  std::vector<CushionArc> jaws;
-  std::vector<PocketCircle> pockets;
+  std::vector<JawArc> jaws;
+  std::vector<Circle> pockets;
 };
+
+// The geometry of a table loaded from engine/table.h.
+TableGeometry geometryOf(const Table& table);
 
 // A table with a rectangular playing area and no pockets: four cushions, inward normals.
 TableGeometry rectangularTable(double length_m, double width_m);

@@ -1,5 +1,9 @@
 #include "engine/shot_simulator.h"
 
+#include "engine/ball_set.h"
+#include "engine/rack.h"
+#include "engine/table.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -239,6 +243,42 @@ TEST(ShotSimulator, AJawActsAsACushionAlongItsContactNormalWithinItsRange) {
   TableGeometry back;
   back.jaws.push_back({{1.0, 0.0}, rho, -M_PI / 2, M_PI / 2});  // faces +x: the ball meets its back
   for (const Event& e : simulate(p, back, {ball}).events) EXPECT_NE(e.kind, EventKind::Jaw);
+}
+
+// A 9-ball break on the shipped 9 ft table with its jaws and pockets: energy never grows at an event,
+// colliding balls touch at 2R, every ball ends pocketed or on the table, and the same break gives the
+// same events twice.
+TEST(ShotSimulator, NineBallBreakOnTheShippedTableKeepsItsInvariants) {
+  const Table table = builtinTable("pool-9ft");
+  const std::vector<PlacedBall> rack = placeRack("9-ball", table, builtinBallSet("pool"));
+  SimulationParams p = poolSimulationParams();
+  std::vector<BallState> balls;
+  for (const PlacedBall& placed : rack) balls.push_back(ballAt(placed.position_m.x(), placed.position_m.y()));
+  const Eigen::Vector2d aim = (balls[1].position - balls[0].position).normalized();
+  balls[0].velocity = {8 * aim.x(), 8 * aim.y() + 0.05, 0};
+  const TableGeometry geometry = geometryOf(table);
+  const SimulationResult r = simulate(p, geometry, balls);
+  const double R = p.cushion.radius_m;
+  int collisions = 0;
+  for (const Event& e : r.events) {
+    double before = 0, after = 0;
+    for (const BallState& b : e.before) before += energy(p.cloth, b);
+    for (const BallState& b : e.after) after += energy(p.cloth, b);
+    EXPECT_LE(after, before * (1 + 1e-12) + 1e-15) << eventKindName(e.kind) << " at " << e.time_s;
+    if (e.kind == EventKind::BallBall) {
+      ++collisions;
+      EXPECT_NEAR((e.before[0].position - e.before[1].position).norm(), 2 * R, kContactTolerance_m);
+    }
+  }
+  EXPECT_GT(collisions, 9) << "the break spreads the rack";
+  for (const BallRecord& b : r.final_balls) {
+    if (b.pocketed) continue;
+    EXPECT_LE(std::abs(b.state.position.x()), table.length_m / 2) << "on the table";
+    EXPECT_LE(std::abs(b.state.position.y()), table.width_m / 2) << "on the table";
+  }
+  const SimulationResult again = simulate(p, geometry, balls);
+  ASSERT_EQ(again.events.size(), r.events.size());
+  for (std::size_t i = 0; i < r.events.size(); ++i) EXPECT_EQ(again.events[i].time_s, r.events[i].time_s);
 }
 
 TEST(ShotSimulator, BadScenesAreRejectedWithTheValue) {

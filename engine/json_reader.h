@@ -1,0 +1,49 @@
+// Strict reading of JSON data files: every error names the file, the key path and the value, and
+// says what is allowed. One reader serves the table and ball-set loaders.
+#pragma once
+
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace baize::engine {
+
+// A view of one JSON object inside a document, remembering where it came from (the file name and
+// the key path, such as "corner_pocket" or "balls[3]") so that errors can say so.
+class JsonReader {
+ public:
+  // `source` names the document in messages (usually its file path).
+  JsonReader(const nlohmann::json& object, std::string source, std::string path = "");
+
+  // Parses the file. Throws std::invalid_argument when it cannot be opened or is not valid JSON
+  // (the message holds the parser's line and column).
+  static nlohmann::json parseFile(const std::string& file_path);
+
+  // Throws unless the object has exactly these keys: an unknown key or a missing one is named.
+  void requireExactKeys(std::initializer_list<const char*> keys) const;
+
+  JsonReader object(const std::string& key) const;
+  std::vector<JsonReader> objectArray(const std::string& key) const;  // a non-empty array
+  std::string text(const std::string& key) const;                     // a non-empty string
+  bool boolean(const std::string& key) const;
+  double finiteNumber(const std::string& key) const;
+  double positiveNumber(const std::string& key) const;          // finite and > 0
+  double nonNegativeNumber(const std::string& key) const;       // finite and >= 0
+  int integer(const std::string& key, int min, int max) const;  // an integer in [min, max]
+
+  // "source: path.key" for messages about a value that passed its own check but not a relation.
+  std::string where(const std::string& key) const;
+
+  // Throws std::invalid_argument("<source>: <path.key> = <value> is not allowed: <allowed>").
+  [[noreturn]] void reject(const std::string& key, const std::string& allowed) const;
+
+ private:
+  const nlohmann::json& value(const std::string& key) const;  // throws when the key is missing
+
+  const nlohmann::json& object_;
+  std::string source_;
+  std::string path_;
+};
+
+}  // namespace baize::engine

@@ -1,0 +1,324 @@
+#include "engine/table.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/json_reader.h"
+#include "physics/value_text.h"
+
+namespace baize::engine {
+namespace {
+
+using Eigen::Vector2d;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRadiansPerDegree = kPi / 180.0;
+
+Vector2d leftNormal(const Vector2d& direction) { return Vector2d(-direction.y(), direction.x()); }
+Vector2d rightNormal(const Vector2d& direction) { return Vector2d(direction.y(), -direction.x()); }
+
+PocketSpec readPocketSpec(const JsonReader& pocket) {
+  pocket.requireExactKeys({"mouth_width_m", "facing_angle_deg", "jaw_radius_m", "facing_length_m",
+                           "capture_offset_m", "capture_radius_m"});
+  PocketSpec spec;
+  spec.mouth_width_m = pocket.positiveNumber("mouth_width_m");
+  const double facing_angle_deg = pocket.finiteNumber("facing_angle_deg");
+  // At 90 degrees or less the facings would open outwards or fold back; at 180 there is no facing.
+  if (!(facing_angle_deg > 90 && facing_angle_deg < 180)) {
+    pocket.reject("facing_angle_deg", "it must lie in (90, 180) degrees");
+  }
+  spec.facing_angle_rad = facing_angle_deg * kRadiansPerDegree;
+  spec.jaw_radius_m = pocket.positiveNumber("jaw_radius_m");
+  spec.facing_length_m = pocket.positiveNumber("facing_length_m");
+  spec.capture_offset_m = pocket.nonNegativeNumber("capture_offset_m");
+  spec.capture_radius_m = pocket.positiveNumber("capture_radius_m");
+  // The rounding must end on the facing, not beyond it.
+  const double tangent_distance_m = spec.jaw_radius_m / std::tan(spec.facing_angle_rad / 2);
+  if (!(tangent_distance_m < spec.facing_length_m)) {
+    pocket.reject("jaw_radius_m",
+                  "the jaw rounding must end on the facing: jaw_radius_m / "
+                  "tan(facing_angle / 2) must be less than facing_length_m");
+  }
+  return spec;
+}
+
+// Distance from a pocket's centre point (corner or middle of the rail) to each of its jaw tips,
+// measured along the rail.
+double jawTipSetback(PocketKind kind, const PocketSpec& spec) {
+  return kind == PocketKind::Corner ? spec.mouth_width_m / std::sqrt(2.0) : spec.mouth_width_m / 2;
+}
+
+// Length of the rail along the nose taken by a pocket's jaw: tip setback plus the rounding.
+double railTakenByJaw(PocketKind kind, const PocketSpec& spec) {
+  return jawTipSetback(kind, spec) + spec.jaw_radius_m / std::tan(spec.facing_angle_rad / 2);
+}
+
+// One jaw: the tip on the rail line, the rail direction towards the pocket and the outward normal.
+struct Jaw {
+  Vector2d tip;
+  Vector2d towards_pocket;
+  Vector2d outward;
+};
+
+struct JawGeometry {
+  Vector2d rail_tangent_point;
+  Vector2d facing_tangent_point;
+  Vector2d facing_end;
+  JawArc arc;
+};
+
+JawGeometry buildJaw(const Jaw& jaw, const PocketSpec& spec, int pocket) {
+  const double phi = spec.facing_angle_rad;
+  // The facing leaves the rail line turning away from the table by pi - phi.
+  const Vector2d facing = -std::cos(phi) * jaw.towards_pocket + std::sin(phi) * jaw.outward;
+  const double tangent_distance = spec.jaw_radius_m / std::tan(phi / 2);
+  JawGeometry geometry;
+  geometry.rail_tangent_point = jaw.tip - tangent_distance * jaw.towards_pocket;
+  geometry.facing_tangent_point = jaw.tip + tangent_distance * facing;
+  geometry.facing_end = jaw.tip + spec.facing_length_m * facing;
+  // The arc centre is inside the cushion, one radius from both lines.
+  geometry.arc.centre_m = geometry.rail_tangent_point + spec.jaw_radius_m * jaw.outward;
+  geometry.arc.radius_m = spec.jaw_radius_m;
+  geometry.arc.pocket = pocket;
+  const Vector2d to_rail = geometry.rail_tangent_point - geometry.arc.centre_m;
+  const Vector2d to_facing = geometry.facing_tangent_point - geometry.arc.centre_m;
+  const double rail_angle = std::atan2(to_rail.y(), to_rail.x());
+  const double facing_angle = std::atan2(to_facing.y(), to_facing.x());
+  const double sweep = kPi - phi;
+  // The arc turns from one tangent point to the other by pi - phi; start where it turns
+  // counterclockwise.
+  const bool counterclockwise_from_rail =
+      to_rail.x() * to_facing.y() - to_rail.y() * to_facing.x() > 0;
+  geometry.arc.start_angle_rad = counterclockwise_from_rail ? rail_angle : facing_angle;
+  geometry.arc.end_angle_rad = geometry.arc.start_angle_rad + sweep;
+  return geometry;
+}
+
+CushionSegment segment(const Vector2d& start, const Vector2d& end, int pocket) {
+  CushionSegment piece;
+  piece.start_m = start;
+  piece.end_m = end;
+  piece.inward_normal = leftNormal((end - start).normalized());
+  piece.pocket = pocket;
+  return piece;
+}
+
+// Pockets counterclockwise from the bottom-left corner, each as its centre point and the
+// counterclockwise travel directions along the rail arriving at it and leaving it.
+struct PocketPlace {
+  PocketKind kind;
+  Vector2d centre;
+  Vector2d arriving;
+  Vector2d leaving;
+};
+
+std::vector<PocketPlace> pocketPlaces(double half_length, double half_width) {
+  const Vector2d east(1, 0), west(-1, 0), north(0, 1), south(0, -1);
+  return {{PocketKind::Corner, {-half_length, -half_width}, south, east},
+          {PocketKind::Side, {0, -half_width}, east, east},
+          {PocketKind::Corner, {half_length, -half_width}, east, north},
+          {PocketKind::Corner, {half_length, half_width}, north, west},
+          {PocketKind::Side, {0, half_width}, west, west},
+          {PocketKind::Corner, {-half_length, half_width}, west, south}};
+}
+
+void buildCushions(Table& table) {
+  const auto places = pocketPlaces(table.length_m / 2, table.width_m / 2);
+  std::vector<JawGeometry> entries, exits;
+  for (std::size_t k = 0; k < places.size(); ++k) {
+    const PocketPlace& place = places[k];
+    const PocketSpec& spec =
+        place.kind == PocketKind::Corner ? table.corner_pocket : table.side_pocket;
+    const double setback = jawTipSetback(place.kind, spec);
+    const Jaw entry{place.centre - setback * place.arriving, place.arriving,
+                    rightNormal(place.arriving)};
+    const Jaw exit{place.centre + setback * place.leaving, -place.leaving,
+                   rightNormal(place.leaving)};
+    entries.push_back(buildJaw(entry, spec, static_cast<int>(k)));
+    exits.push_back(buildJaw(exit, spec, static_cast<int>(k)));
+
+    Pocket pocket;
+    pocket.kind = place.kind;
+    pocket.jaw_tips_m[0] = entry.tip;
+    pocket.jaw_tips_m[1] = exit.tip;
+    pocket.mouth_centre_m = (entry.tip + exit.tip) / 2;
+    pocket.axis = (entry.outward + exit.outward).normalized();
+    pocket.capture.centre_m = pocket.mouth_centre_m + spec.capture_offset_m * pocket.axis;
+    pocket.capture.radius_m = spec.capture_radius_m;
+    table.pockets.push_back(pocket);
+  }
+  for (std::size_t k = 0; k < places.size(); ++k) {
+    const int index = static_cast<int>(k);
+    const JawGeometry& next_entry = entries[(k + 1) % places.size()];
+    table.cushions.push_back(
+        segment(entries[k].facing_tangent_point, entries[k].facing_end, index));
+    table.cushions.push_back(segment(exits[k].facing_end, exits[k].facing_tangent_point, index));
+    table.cushions.push_back(
+        segment(exits[k].rail_tangent_point, next_entry.rail_tangent_point, -1));
+    table.jaw_arcs.push_back(entries[k].arc);
+    table.jaw_arcs.push_back(exits[k].arc);
+  }
+}
+
+// The facings of one pocket converge (facing angle above 90 degrees); they must not cross.
+void checkFacingsDoNotCross(const Table& table, const JsonReader& corner, const JsonReader& side) {
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    const Pocket& pocket = table.pockets[k];
+    const Vector2d across = pocket.jaw_tips_m[1] - pocket.jaw_tips_m[0];
+    const double entry_side = across.dot(table.cushions[3 * k].end_m - pocket.mouth_centre_m);
+    const double exit_side = across.dot(table.cushions[3 * k + 1].start_m - pocket.mouth_centre_m);
+    if (!(entry_side < 0 && exit_side > 0)) {
+      (pocket.kind == PocketKind::Corner ? corner : side)
+          .reject("facing_length_m",
+                  "the two facings of a pocket converge and must end before "
+                  "they meet on the pocket axis");
+    }
+  }
+}
+
+void checkRailsRemain(const Table& table, const JsonReader& corner, const JsonReader& side) {
+  const double short_rail_m =
+      table.width_m - 2 * railTakenByJaw(PocketKind::Corner, table.corner_pocket);
+  if (!(short_rail_m > 0)) {
+    corner.reject("mouth_width_m",
+                  "the corner mouths and jaw roundings take the whole short rail "
+                  "(width " +
+                      physics::valueText(table.width_m) + " m)");
+  }
+  const double long_rail_m = table.length_m / 2 -
+                             railTakenByJaw(PocketKind::Corner, table.corner_pocket) -
+                             railTakenByJaw(PocketKind::Side, table.side_pocket);
+  if (!(long_rail_m > 0)) {
+    side.reject("mouth_width_m",
+                "the corner and side mouths and jaw roundings take the whole long "
+                "rail between them (half length " +
+                    physics::valueText(table.length_m / 2) + " m)");
+  }
+}
+
+PoolMarkings readPoolMarkings(const JsonReader& markings, const Table& table) {
+  markings.requireExactKeys({"diamonds_per_rail_segment", "diamond_setback_m"});
+  PoolMarkings pool;
+  pool.diamonds_per_rail_segment = markings.integer("diamonds_per_rail_segment", 1, 20);
+  pool.diamond_setback_m = markings.positiveNumber("diamond_setback_m");
+  const double half_length = table.length_m / 2, half_width = table.width_m / 2;
+  const int count = pool.diamonds_per_rail_segment;
+  for (int i = 1; i <= count; ++i) {
+    const double fraction = static_cast<double>(i) / (count + 1);
+    // Long rails: two segments each (corner to side pocket); short rails: one segment.
+    for (const double y :
+         {-half_width - pool.diamond_setback_m, half_width + pool.diamond_setback_m}) {
+      pool.diamonds_m.emplace_back(-half_length + fraction * half_length, y);
+      pool.diamonds_m.emplace_back(fraction * half_length, y);
+    }
+    for (const double x :
+         {-half_length - pool.diamond_setback_m, half_length + pool.diamond_setback_m}) {
+      pool.diamonds_m.emplace_back(x, -half_width + fraction * table.width_m);
+    }
+  }
+  pool.foot_spot_m = Vector2d(half_length / 2, 0);
+  pool.head_spot_m = Vector2d(-half_length / 2, 0);
+  pool.head_string_x_m = -half_length / 2;
+  return pool;
+}
+
+SnookerMarkings readSnookerMarkings(const JsonReader& markings, const Table& table) {
+  markings.requireExactKeys(
+      {"baulk_line_from_bottom_cushion_m", "d_radius_m", "black_spot_from_top_cushion_m"});
+  const double half_length = table.length_m / 2, half_width = table.width_m / 2;
+  const double baulk_m = markings.positiveNumber("baulk_line_from_bottom_cushion_m");
+  if (!(baulk_m < half_length)) {
+    markings.reject("baulk_line_from_bottom_cushion_m", "it must be less than half the length");
+  }
+  const double d_radius_m = markings.positiveNumber("d_radius_m");
+  if (!(d_radius_m < half_width && d_radius_m < baulk_m)) {
+    markings.reject("d_radius_m",
+                    "the D must fit on the table: less than half the width and "
+                    "than the baulk line's distance from the bottom cushion");
+  }
+  const double black_m = markings.positiveNumber("black_spot_from_top_cushion_m");
+  // The black spot lies between the pink spot (half way to the top cushion) and the top cushion.
+  if (!(black_m < half_length / 2)) {
+    markings.reject("black_spot_from_top_cushion_m",
+                    "it must be less than a quarter of the length");
+  }
+  SnookerMarkings snooker;
+  snooker.baulk_line_x_m = -half_length + baulk_m;
+  snooker.d_radius_m = d_radius_m;
+  // Seen from the baulk end (looking along +x) the yellow is on the right (-y), the green on the
+  // left.
+  snooker.yellow_spot_m = Vector2d(snooker.baulk_line_x_m, -d_radius_m);
+  snooker.green_spot_m = Vector2d(snooker.baulk_line_x_m, d_radius_m);
+  snooker.brown_spot_m = Vector2d(snooker.baulk_line_x_m, 0);
+  snooker.blue_spot_m = Vector2d(0, 0);
+  snooker.pink_spot_m = Vector2d(half_length / 2, 0);
+  snooker.black_spot_m = Vector2d(half_length - black_m, 0);
+  return snooker;
+}
+
+}  // namespace
+
+Eigen::Vector2d JawArc::pointAt(double angle_rad) const {
+  return centre_m + radius_m * Eigen::Vector2d(std::cos(angle_rad), std::sin(angle_rad));
+}
+
+Table tableFromJson(const nlohmann::json& document, const std::string& source) {
+  const JsonReader root(document, source);
+  root.requireExactKeys({"name", "kind", "description", "playing_surface",
+                         "cushion_contact_height_m", "corner_pocket", "side_pocket", "markings"});
+  Table table;
+  table.name = root.text("name");
+  table.description = root.text("description");
+  const std::string kind = root.text("kind");
+  if (kind != "pool" && kind != "snooker")
+    root.reject("kind", "it must be \"pool\" or \"snooker\"");
+  table.kind = kind == "pool" ? TableKind::Pool : TableKind::Snooker;
+
+  const JsonReader surface = root.object("playing_surface");
+  surface.requireExactKeys({"length_m", "width_m"});
+  table.length_m = surface.positiveNumber("length_m");
+  table.width_m = surface.positiveNumber("width_m");
+  if (!(table.width_m < table.length_m)) {
+    surface.reject("width_m", "it must be less than length_m (x runs along the long side)");
+  }
+  table.cushion_contact_height_m = root.positiveNumber("cushion_contact_height_m");
+
+  const JsonReader corner = root.object("corner_pocket");
+  const JsonReader side = root.object("side_pocket");
+  table.corner_pocket = readPocketSpec(corner);
+  table.side_pocket = readPocketSpec(side);
+  checkRailsRemain(table, corner, side);
+  buildCushions(table);
+  checkFacingsDoNotCross(table, corner, side);
+
+  const JsonReader markings = root.object("markings");
+  if (table.kind == TableKind::Pool) {
+    table.pool_markings = readPoolMarkings(markings, table);
+  } else {
+    table.snooker_markings = readSnookerMarkings(markings, table);
+  }
+  return table;
+}
+
+Table loadTable(const std::string& path) {
+  return tableFromJson(JsonReader::parseFile(path), path);
+}
+
+std::string assetsDirectory() { return BAIZE_ASSETS_DIR; }
+
+std::vector<std::string> builtinTableNames() {
+  return {"pool-7ft", "pool-8ft", "pool-9ft", "snooker-12ft"};
+}
+
+Table builtinTable(const std::string& name) {
+  for (const std::string& known : builtinTableNames()) {
+    if (name == known) return loadTable(assetsDirectory() + "/tables/" + name + ".json");
+  }
+  std::string allowed;
+  for (const std::string& known : builtinTableNames())
+    allowed += (allowed.empty() ? "" : ", ") + known;
+  throw std::invalid_argument("table name \"" + name +
+                              "\" is not allowed: the built-in tables are " + allowed);
+}
+
+}  // namespace baize::engine

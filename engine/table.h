@@ -1,0 +1,118 @@
+// A table as data: its playing surface, cushions, pockets and markings, loaded from a JSON file
+// (docs/tables.md describes the format), and the cushion geometry the event loop collides with.
+//
+// Table frame: origin at the centre of the playing surface, x along the long side (towards the
+// foot / top cushion), y across, metres. The cushion noses lie on the edges of the rectangle
+// [-length/2, length/2] x [-width/2, width/2]; pockets sit at the four corners and the middles of
+// the long sides.
+#pragma once
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace baize::engine {
+
+enum class TableKind { Pool, Snooker };
+enum class PocketKind { Corner, Side };
+
+// The shape of one kind of pocket, as given in the file (angles already in radians).
+struct PocketSpec {
+  double mouth_width_m = 0;     // between the jaw tips (where rail and facing lines meet)
+  double facing_angle_rad = 0;  // between the rail nose and the facing, inside the cushion
+  double jaw_radius_m = 0;      // rounding of the jaw tip, tangent to rail and facing
+  double facing_length_m = 0;   // from the jaw tip along the facing
+  double capture_offset_m = 0;  // capture-circle centre behind the mouth, along the pocket axis
+  double capture_radius_m = 0;  // a ball whose centre enters the capture circle is pocketed
+};
+
+struct Circle {
+  Eigen::Vector2d centre_m = Eigen::Vector2d::Zero();
+  double radius_m = 0;
+};
+
+// A straight cushion nose. The outline runs counterclockwise, so the inward normal (towards where
+// balls roll) is the direction start -> end turned +90 degrees.
+struct CushionSegment {
+  Eigen::Vector2d start_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d end_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d inward_normal = Eigen::Vector2d::Zero();  // unit
+  int pocket = -1;  // index of the pocket whose facing this is; -1 for a rail
+};
+
+// The rounded jaw tip: the points centre + radius (cos a, sin a) for a from start to end
+// (counterclockwise, end - start = pi - facing angle). Balls touch it from outside the circle.
+struct JawArc {
+  Eigen::Vector2d centre_m = Eigen::Vector2d::Zero();
+  double radius_m = 0;
+  double start_angle_rad = 0;
+  double end_angle_rad = 0;
+  int pocket = 0;
+
+  Eigen::Vector2d pointAt(double angle_rad) const;
+};
+
+struct Pocket {
+  PocketKind kind = PocketKind::Corner;
+  // The jaw tips in outline order: the one reached first going counterclockwise, then the other.
+  Eigen::Vector2d jaw_tips_m[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+  Eigen::Vector2d mouth_centre_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d axis = Eigen::Vector2d::Zero();  // unit, from the mouth out of the table
+  Circle capture;
+};
+
+struct PoolMarkings {
+  int diamonds_per_rail_segment = 0;
+  double diamond_setback_m = 0;             // from the cushion nose outwards to the diamond centre
+  std::vector<Eigen::Vector2d> diamonds_m;  // on the rail tops, outside the playing rectangle
+  Eigen::Vector2d foot_spot_m = Eigen::Vector2d::Zero();  // centre of the foot half (+x)
+  Eigen::Vector2d head_spot_m = Eigen::Vector2d::Zero();  // centre of the head half (-x)
+  double head_string_x_m = 0;  // the line x = head_string_x_m behind which the cue ball breaks
+};
+
+struct SnookerMarkings {
+  double baulk_line_x_m = 0;  // the baulk line is x = baulk_line_x_m (bottom cushion at -x)
+  double d_radius_m = 0;      // the D: half-disc behind the baulk line centred on the brown spot
+  Eigen::Vector2d yellow_spot_m, green_spot_m, brown_spot_m, blue_spot_m, pink_spot_m, black_spot_m;
+};
+
+struct Table {
+  std::string name;
+  std::string description;
+  TableKind kind = TableKind::Pool;
+  double length_m = 0;  // playing surface, between the cushion noses
+  double width_m = 0;
+  double cushion_contact_height_m = 0;  // height of the cushion nose contact above the slate
+  PocketSpec corner_pocket, side_pocket;
+
+  // Counterclockwise from the bottom-left corner: corner (-x,-y), side (-y), corner (+x,-y),
+  // corner (+x,+y), side (+y), corner (-x,+y).
+  std::vector<Pocket> pockets;
+  // For each pocket k in order: its entry facing, its exit facing, then the rail from pocket k to
+  // pocket k+1. Going counterclockwise the outline is: rail, entry jaw arc, entry facing, (the
+  // pocket opening), exit facing, exit jaw arc, next rail.
+  std::vector<CushionSegment> cushions;
+  // For each pocket k: entry jaw arc, exit jaw arc (the outline crosses them clockwise).
+  std::vector<JawArc> jaw_arcs;
+
+  std::optional<PoolMarkings> pool_markings;        // set for pool tables
+  std::optional<SnookerMarkings> snooker_markings;  // set for snooker tables
+};
+
+// Builds a table from a parsed JSON document; `source` names it in error messages. Throws
+// std::invalid_argument naming the source, the key path, the value and what is allowed.
+Table tableFromJson(const nlohmann::json& document, const std::string& source);
+
+// Reads and validates a table file.
+Table loadTable(const std::string& path);
+
+// The shipped tables: "pool-7ft", "pool-8ft", "pool-9ft", "snooker-12ft".
+std::vector<std::string> builtinTableNames();
+Table builtinTable(const std::string& name);
+
+// Directory of the shipped assets (tables/, balls/).
+std::string assetsDirectory();
+
+}  // namespace baize::engine

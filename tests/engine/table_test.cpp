@@ -1,0 +1,462 @@
+#include "engine/table.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "tests/engine/error_test_support.h"
+
+namespace baize::engine {
+namespace {
+
+using Eigen::Vector2d;
+
+// Table coordinates are sums and products of a few metre-sized numbers: rounding stays far below.
+constexpr double kRoundingDistance_m = 1e-12;
+// Angles from atan2 and acos of such coordinates (acos loses accuracy near 0 and pi: sqrt(eps)).
+constexpr double kRoundingAngle_rad = 1e-7;
+// Positions divided by a rail length, compared with whole multiples: rounding only, relative.
+constexpr double kRoundingRelative = 1e-12;
+// The pockets' channels add a little area beyond the rectangle; 5 % is far more than they add.
+constexpr double kPocketAreaAllowance = 0.05;
+
+constexpr double kPi = 3.14159265358979323846;
+
+double cross(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Intersection of the lines through (a0, a1) and (b0, b1).
+Vector2d lineIntersection(const Vector2d& a0, const Vector2d& a1, const Vector2d& b0,
+                          const Vector2d& b1) {
+  const Vector2d da = a1 - a0, db = b1 - b0;
+  return a0 + cross(b0 - a0, db) / cross(da, db) * da;
+}
+
+double distanceToLine(const Vector2d& point, const CushionSegment& segment) {
+  const Vector2d direction = (segment.end_m - segment.start_m).normalized();
+  return std::abs(cross(direction, point - segment.start_m));
+}
+
+double angleBetween(const Vector2d& a, const Vector2d& b) {
+  return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+}
+
+const PocketSpec& specOf(const Table& table, const Pocket& pocket) {
+  return pocket.kind == PocketKind::Corner ? table.corner_pocket : table.side_pocket;
+}
+
+// The pieces of the outline around pocket k, in counterclockwise order.
+struct PocketOutline {
+  const CushionSegment& rail_in;
+  const JawArc& entry_arc;
+  const CushionSegment& entry_facing;
+  const CushionSegment& exit_facing;
+  const JawArc& exit_arc;
+  const CushionSegment& rail_out;
+};
+
+PocketOutline outlineAround(const Table& table, std::size_t k) {
+  const std::size_t previous = (k + table.pockets.size() - 1) % table.pockets.size();
+  return {table.cushions[3 * previous + 2], table.jaw_arcs[2 * k],     table.cushions[3 * k],
+          table.cushions[3 * k + 1],        table.jaw_arcs[2 * k + 1], table.cushions[3 * k + 2]};
+}
+
+bool near(const Vector2d& a, const Vector2d& b) { return (a - b).norm() <= kRoundingDistance_m; }
+
+// The two ends of the arc are the two given points, in either order.
+bool arcJoins(const JawArc& arc, const Vector2d& p, const Vector2d& q) {
+  const Vector2d a = arc.pointAt(arc.start_angle_rad), b = arc.pointAt(arc.end_angle_rad);
+  return (near(a, p) && near(b, q)) || (near(a, q) && near(b, p));
+}
+
+class BuiltinTableTest : public ::testing::TestWithParam<std::string> {
+ protected:
+  Table table = builtinTable(GetParam());
+};
+
+TEST_P(BuiltinTableTest, HasSixPocketsEighteenCushionsTwelveJawArcs) {
+  EXPECT_EQ(table.name, GetParam());
+  EXPECT_EQ(table.pockets.size(), 6u);
+  EXPECT_EQ(table.cushions.size(), 18u);
+  EXPECT_EQ(table.jaw_arcs.size(), 12u);
+  EXPECT_EQ(table.pool_markings.has_value(), table.kind == TableKind::Pool);
+  EXPECT_EQ(table.snooker_markings.has_value(), table.kind == TableKind::Snooker);
+}
+
+TEST_P(BuiltinTableTest, OutlineIsContinuousThroughJawArcs) {
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    SCOPED_TRACE("pocket " + std::to_string(k));
+    const PocketOutline outline = outlineAround(table, k);
+    EXPECT_TRUE(arcJoins(outline.entry_arc, outline.rail_in.end_m, outline.entry_facing.start_m));
+    EXPECT_TRUE(arcJoins(outline.exit_arc, outline.exit_facing.end_m, outline.rail_out.start_m));
+    EXPECT_EQ(outline.entry_facing.pocket, static_cast<int>(k));
+    EXPECT_EQ(outline.exit_facing.pocket, static_cast<int>(k));
+    EXPECT_EQ(outline.rail_out.pocket, -1);
+  }
+}
+
+TEST_P(BuiltinTableTest, JawArcsAreTangentToRailAndFacingAndTurnByPiMinusFacingAngle) {
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    SCOPED_TRACE("pocket " + std::to_string(k));
+    const PocketOutline outline = outlineAround(table, k);
+    const PocketSpec& spec = specOf(table, table.pockets[k]);
+    for (const auto& [arc, rail, facing] :
+         {std::make_tuple(&outline.entry_arc, &outline.rail_in, &outline.entry_facing),
+          std::make_tuple(&outline.exit_arc, &outline.rail_out, &outline.exit_facing)}) {
+      EXPECT_DOUBLE_EQ(arc->radius_m, spec.jaw_radius_m);
+      EXPECT_NEAR(distanceToLine(arc->centre_m, *rail), arc->radius_m, kRoundingDistance_m);
+      EXPECT_NEAR(distanceToLine(arc->centre_m, *facing), arc->radius_m, kRoundingDistance_m);
+      // The centre lies inside the cushion, behind both noses.
+      EXPECT_LT(rail->inward_normal.dot(arc->centre_m - rail->start_m), 0);
+      EXPECT_LT(facing->inward_normal.dot(arc->centre_m - facing->start_m), 0);
+      EXPECT_NEAR(arc->end_angle_rad - arc->start_angle_rad, kPi - spec.facing_angle_rad,
+                  kRoundingAngle_rad);
+    }
+  }
+}
+
+TEST_P(BuiltinTableTest, NormalsAreUnitLeftOfTravelAndPointIntoTheTable) {
+  for (const CushionSegment& cushion : table.cushions) {
+    const Vector2d direction = (cushion.end_m - cushion.start_m).normalized();
+    EXPECT_NEAR(cushion.inward_normal.norm(), 1, kRoundingDistance_m);
+    EXPECT_NEAR(cushion.inward_normal.dot(direction), 0, kRoundingDistance_m);
+    EXPECT_GT(cross(direction, cushion.inward_normal), 0);  // left of the counterclockwise travel
+    if (cushion.pocket < 0) {
+      // Rails lie on the rectangle's edges and face the centre of the table.
+      EXPECT_GT(cushion.inward_normal.dot(-cushion.start_m), 0);
+      const bool on_long_edge =
+          std::abs(std::abs(cushion.start_m.y()) - table.width_m / 2) <= kRoundingDistance_m &&
+          std::abs(std::abs(cushion.end_m.y()) - table.width_m / 2) <= kRoundingDistance_m;
+      const bool on_short_edge =
+          std::abs(std::abs(cushion.start_m.x()) - table.length_m / 2) <= kRoundingDistance_m &&
+          std::abs(std::abs(cushion.end_m.x()) - table.length_m / 2) <= kRoundingDistance_m;
+      EXPECT_TRUE(on_long_edge || on_short_edge);
+    } else {
+      // Facings face the pocket's channel.
+      const Pocket& pocket = table.pockets[cushion.pocket];
+      EXPECT_GT(cushion.inward_normal.dot(pocket.mouth_centre_m - cushion.start_m), 0);
+    }
+  }
+}
+
+TEST_P(BuiltinTableTest, OutlineIsCounterclockwiseAndEnclosesAboutThePlayingArea) {
+  std::vector<Vector2d> corners;
+  for (const CushionSegment& cushion : table.cushions) {
+    corners.push_back(cushion.start_m);
+    corners.push_back(cushion.end_m);
+  }
+  double twice_area = 0;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    twice_area += cross(corners[i], corners[(i + 1) % corners.size()]);
+  }
+  // The pockets add a little area beyond the rectangle; none is lost.
+  EXPECT_GT(twice_area / 2, table.length_m * table.width_m);
+  EXPECT_LT(twice_area / 2, (1 + kPocketAreaAllowance) * table.length_m * table.width_m);
+}
+
+TEST_P(BuiltinTableTest, MouthBetweenJawTipsIsTheStatedWidthAndFacingsMeetRailsAtTheFacingAngle) {
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    SCOPED_TRACE("pocket " + std::to_string(k));
+    const PocketOutline outline = outlineAround(table, k);
+    const PocketSpec& spec = specOf(table, table.pockets[k]);
+    const Vector2d entry_tip =
+        lineIntersection(outline.rail_in.start_m, outline.rail_in.end_m,
+                         outline.entry_facing.start_m, outline.entry_facing.end_m);
+    const Vector2d exit_tip =
+        lineIntersection(outline.rail_out.start_m, outline.rail_out.end_m,
+                         outline.exit_facing.start_m, outline.exit_facing.end_m);
+    EXPECT_NEAR((entry_tip - exit_tip).norm(), spec.mouth_width_m, kRoundingDistance_m);
+    EXPECT_TRUE(near(entry_tip, table.pockets[k].jaw_tips_m[0]));
+    EXPECT_TRUE(near(exit_tip, table.pockets[k].jaw_tips_m[1]));
+    // Inside the cushion, between the rail nose running back and the facing running out.
+    const Vector2d rail_back_in = outline.rail_in.start_m - outline.rail_in.end_m;
+    const Vector2d facing_out_in = outline.entry_facing.end_m - outline.entry_facing.start_m;
+    EXPECT_NEAR(angleBetween(rail_back_in, facing_out_in), spec.facing_angle_rad,
+                kRoundingAngle_rad);
+    const Vector2d rail_back_out = outline.rail_out.end_m - outline.rail_out.start_m;
+    const Vector2d facing_out_out = outline.exit_facing.start_m - outline.exit_facing.end_m;
+    EXPECT_NEAR(angleBetween(rail_back_out, facing_out_out), spec.facing_angle_rad,
+                kRoundingAngle_rad);
+    EXPECT_NEAR(facing_out_in.norm() + (outline.entry_facing.start_m - entry_tip).norm(),
+                spec.facing_length_m, kRoundingDistance_m);
+  }
+}
+
+TEST_P(BuiltinTableTest, CaptureCircleLiesBehindTheMouthOnThePocketAxis) {
+  for (const Pocket& pocket : table.pockets) {
+    const PocketSpec& spec = specOf(table, pocket);
+    const Vector2d behind = pocket.capture.centre_m - pocket.mouth_centre_m;
+    EXPECT_NEAR(behind.dot(pocket.axis), spec.capture_offset_m, kRoundingDistance_m);
+    EXPECT_NEAR(cross(pocket.axis, behind), 0, kRoundingDistance_m);
+    EXPECT_DOUBLE_EQ(pocket.capture.radius_m, spec.capture_radius_m);
+    // The axis points out of the table: the mouth centre moves away from the table centre along it.
+    EXPECT_GT(pocket.axis.dot(pocket.mouth_centre_m), 0);
+  }
+}
+
+// Each piece has its mirror image among the pieces.
+void expectMirrorSymmetric(const Table& table,
+                           const std::function<Vector2d(const Vector2d&)>& mirror) {
+  for (const CushionSegment& a : table.cushions) {
+    int matches = 0;
+    for (const CushionSegment& b : table.cushions) {
+      const bool same = (near(mirror(a.start_m), b.start_m) && near(mirror(a.end_m), b.end_m)) ||
+                        (near(mirror(a.start_m), b.end_m) && near(mirror(a.end_m), b.start_m));
+      if (same && near(mirror(a.inward_normal), b.inward_normal)) ++matches;
+    }
+    EXPECT_EQ(matches, 1);
+  }
+  for (const JawArc& a : table.jaw_arcs) {
+    int matches = 0;
+    for (const JawArc& b : table.jaw_arcs) {
+      if (near(mirror(a.centre_m), b.centre_m) && a.radius_m == b.radius_m &&
+          arcJoins(b, mirror(a.pointAt(a.start_angle_rad)), mirror(a.pointAt(a.end_angle_rad)))) {
+        ++matches;
+      }
+    }
+    EXPECT_EQ(matches, 1);
+  }
+  for (const Pocket& a : table.pockets) {
+    int matches = 0;
+    for (const Pocket& b : table.pockets) {
+      if (near(mirror(a.capture.centre_m), b.capture.centre_m) && near(mirror(a.axis), b.axis)) {
+        ++matches;
+      }
+    }
+    EXPECT_EQ(matches, 1);
+  }
+}
+
+TEST_P(BuiltinTableTest, GeometryIsMirrorSymmetricAboutBothAxes) {
+  {
+    SCOPED_TRACE("x -> -x");
+    expectMirrorSymmetric(table, [](const Vector2d& p) { return Vector2d(-p.x(), p.y()); });
+  }
+  {
+    SCOPED_TRACE("y -> -y");
+    expectMirrorSymmetric(table, [](const Vector2d& p) { return Vector2d(p.x(), -p.y()); });
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, BuiltinTableTest, ::testing::ValuesIn(builtinTableNames()),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           for (char& c : name) {
+                             if (c == '-') c = '_';
+                           }
+                           return name;
+                         });
+
+TEST(BuiltinTables, PlayingSurfacesAreTheStatedSizes) {
+  EXPECT_DOUBLE_EQ(builtinTable("pool-7ft").length_m, 1.981);
+  EXPECT_DOUBLE_EQ(builtinTable("pool-7ft").width_m, 0.991);
+  EXPECT_DOUBLE_EQ(builtinTable("pool-8ft").length_m, 2.3368);
+  EXPECT_DOUBLE_EQ(builtinTable("pool-8ft").width_m, 1.1684);
+  EXPECT_DOUBLE_EQ(builtinTable("pool-9ft").length_m, 2.540);
+  EXPECT_DOUBLE_EQ(builtinTable("pool-9ft").width_m, 1.270);
+  EXPECT_DOUBLE_EQ(builtinTable("snooker-12ft").length_m, 3.569);
+  EXPECT_DOUBLE_EQ(builtinTable("snooker-12ft").width_m, 1.778);
+}
+
+TEST(BuiltinTables, PoolPocketsAndCushionsAreWithinWpaRanges) {
+  constexpr double kBallDiameter_m = 0.05715;
+  for (const std::string name : {"pool-7ft", "pool-8ft", "pool-9ft"}) {
+    const Table table = builtinTable(name);
+    EXPECT_GE(table.corner_pocket.mouth_width_m, 0.1143);
+    EXPECT_LE(table.corner_pocket.mouth_width_m, 0.1175);
+    EXPECT_GE(table.side_pocket.mouth_width_m, 0.127);
+    EXPECT_LE(table.side_pocket.mouth_width_m, 0.1302);
+    EXPECT_NEAR(table.corner_pocket.facing_angle_rad, 142 * kPi / 180, kRoundingAngle_rad);
+    EXPECT_NEAR(table.side_pocket.facing_angle_rad, 104 * kPi / 180, kRoundingAngle_rad);
+    EXPECT_GE(table.cushion_contact_height_m, 0.625 * kBallDiameter_m);
+    EXPECT_LE(table.cushion_contact_height_m, 0.645 * kBallDiameter_m);
+  }
+}
+
+TEST(BuiltinTables, PoolDiamondsSitAtQuartersOfEachRailSegmentBehindTheNose) {
+  const Table table = builtinTable("pool-9ft");
+  const PoolMarkings& markings = *table.pool_markings;
+  ASSERT_EQ(markings.diamonds_m.size(), 18u);  // 3 on each of 6 rail segments
+  const double half_length = table.length_m / 2, half_width = table.width_m / 2;
+  int on_long = 0, on_short = 0;
+  for (const Vector2d& diamond : markings.diamonds_m) {
+    if (std::abs(std::abs(diamond.y()) - (half_width + markings.diamond_setback_m)) <=
+        kRoundingDistance_m) {
+      ++on_long;
+      // Multiples of length / 8, never at a pocket (0, +-4 eighths).
+      const double eighths = diamond.x() / (table.length_m / 8);
+      EXPECT_NEAR(eighths, std::round(eighths), kRoundingRelative);
+      EXPECT_NE(std::lround(eighths) % 4, 0);
+    } else {
+      ++on_short;
+      EXPECT_NEAR(std::abs(diamond.x()), half_length + markings.diamond_setback_m,
+                  kRoundingDistance_m);
+      const double quarters = diamond.y() / (table.width_m / 4);
+      EXPECT_NEAR(quarters, std::round(quarters), kRoundingRelative);
+      EXPECT_LE(std::abs(std::lround(quarters)), 1);
+    }
+  }
+  EXPECT_EQ(on_long, 12);
+  EXPECT_EQ(on_short, 6);
+  EXPECT_TRUE(near(markings.foot_spot_m, Vector2d(table.length_m / 4, 0)));
+  EXPECT_DOUBLE_EQ(markings.head_string_x_m, -table.length_m / 4);
+}
+
+TEST(BuiltinTables, SnookerSpotsFollowTheRules) {
+  const Table table = builtinTable("snooker-12ft");
+  const SnookerMarkings& m = *table.snooker_markings;
+  const double bottom = -table.length_m / 2, top = table.length_m / 2;
+  EXPECT_NEAR(m.baulk_line_x_m - bottom, 0.737, kRoundingDistance_m);
+  EXPECT_DOUBLE_EQ(m.d_radius_m, 0.292);
+  EXPECT_TRUE(near(m.brown_spot_m, Vector2d(bottom + 0.737, 0)));
+  EXPECT_TRUE(near(m.yellow_spot_m, Vector2d(bottom + 0.737, -0.292)));  // right seen from baulk
+  EXPECT_TRUE(near(m.green_spot_m, Vector2d(bottom + 0.737, 0.292)));
+  EXPECT_TRUE(near(m.blue_spot_m, Vector2d(0, 0)));
+  EXPECT_TRUE(near(m.pink_spot_m, Vector2d((0 + top) / 2, 0)));
+  EXPECT_TRUE(near(m.black_spot_m, Vector2d(top - 0.324, 0)));
+  EXPECT_DOUBLE_EQ(table.cushion_contact_height_m, 0.036);
+}
+
+TEST(BuiltinTables, UnknownNameIsRejectedWithTheKnownNames) {
+  const std::string message = invalidArgumentMessage([] { builtinTable("pool-6ft"); });
+  EXPECT_MENTIONS(message, "pool-6ft");
+  EXPECT_MENTIONS(message, "snooker-12ft");
+}
+
+// Bad files: a shipped table changed in one place, written to a temporary file.
+class BadTableFileTest : public ::testing::Test {
+ protected:
+  nlohmann::json document =
+      nlohmann::json::parse(std::ifstream(assetsDirectory() + "/tables/pool-9ft.json"));
+  // One file per test: ctest runs tests in parallel processes.
+  std::string path = ::testing::TempDir() + "bad_table_" +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json";
+
+  std::string loadError(const std::string& text) {
+    std::ofstream(path) << text;
+    return invalidArgumentMessage([&] { loadTable(path); });
+  }
+  std::string loadError() { return loadError(document.dump(2)); }
+};
+
+TEST_F(BadTableFileTest, TheUnchangedFileLoads) {
+  std::ofstream(path) << document.dump(2);
+  EXPECT_NO_THROW(loadTable(path));
+}
+
+TEST_F(BadTableFileTest, UnknownKeyIsNamed) {
+  document["corner_pocket"]["depth_m"] = 0.1;
+  const std::string message = loadError();
+  EXPECT_MENTIONS(message, path);
+  EXPECT_MENTIONS(message, "corner_pocket.depth_m = 0.1");
+  EXPECT_MENTIONS(message, "unknown key");
+  EXPECT_MENTIONS(message, "mouth_width_m");  // the allowed keys are listed
+}
+
+TEST_F(BadTableFileTest, MissingKeyIsNamed) {
+  document["side_pocket"].erase("jaw_radius_m");
+  const std::string message = loadError();
+  EXPECT_MENTIONS(message, path);
+  EXPECT_MENTIONS(message, "side_pocket.jaw_radius_m is missing");
+}
+
+TEST_F(BadTableFileTest, NegativeSizeIsNamedWithItsValue) {
+  document["playing_surface"]["length_m"] = -2.54;
+  const std::string message = loadError();
+  EXPECT_MENTIONS(message, path);
+  EXPECT_MENTIONS(message, "playing_surface.length_m = -2.54");
+  EXPECT_MENTIONS(message, "> 0");
+}
+
+TEST_F(BadTableFileTest, ZeroJawRadiusIsRejected) {
+  document["corner_pocket"]["jaw_radius_m"] = 0;
+  EXPECT_MENTIONS(loadError(), "corner_pocket.jaw_radius_m = 0");
+}
+
+TEST_F(BadTableFileTest, WrongTypeIsNamed) {
+  document["playing_surface"]["width_m"] = "1.27";
+  const std::string message = loadError();
+  EXPECT_MENTIONS(message, "playing_surface.width_m = \"1.27\"");
+  EXPECT_MENTIONS(message, "must be a number");
+}
+
+TEST_F(BadTableFileTest, NanInTheFileIsReportedWhereItStands) {
+  std::string text = document.dump(2);
+  const std::string key = "\"mouth_width_m\": 0.116";
+  text.replace(text.find(key), key.size(), "\"mouth_width_m\": NaN");
+  const std::string message = loadError(text);
+  EXPECT_MENTIONS(message, path);
+  EXPECT_MENTIONS(message, "\"mouth_width_m\": N");  // the parser's last read text
+  EXPECT_MENTIONS(message, "line");
+}
+
+TEST_F(BadTableFileTest, NumberTooLargeForADoubleIsRejected) {
+  std::string text = document.dump(2);
+  const std::string key = "\"mouth_width_m\": 0.116";
+  text.replace(text.find(key), key.size(), "\"mouth_width_m\": 1e999");
+  const std::string message = loadError(text);
+  EXPECT_MENTIONS(message, path);
+  EXPECT_MENTIONS(message, "1e999");
+}
+
+TEST_F(BadTableFileTest, NonFiniteValueInADocumentIsNamed) {
+  document["corner_pocket"]["mouth_width_m"] = std::numeric_limits<double>::quiet_NaN();
+  const std::string message =
+      invalidArgumentMessage([&] { tableFromJson(document, "scene.json"); });
+  EXPECT_MENTIONS(message, "scene.json: corner_pocket.mouth_width_m = nan");
+  EXPECT_MENTIONS(message, "finite");
+}
+
+TEST_F(BadTableFileTest, MissingFileIsNamed) {
+  const std::string message = invalidArgumentMessage([&] { loadTable(path + ".absent"); });
+  EXPECT_MENTIONS(message, path + ".absent");
+  EXPECT_MENTIONS(message, "cannot be opened");
+}
+
+TEST_F(BadTableFileTest, CornerMouthsWiderThanTheShortRailAreRejected) {
+  document["corner_pocket"]["mouth_width_m"] = 0.9;
+  const std::string message = loadError();
+  EXPECT_MENTIONS(message, "corner_pocket.mouth_width_m = 0.9");
+  EXPECT_MENTIONS(message, "short rail");
+}
+
+TEST_F(BadTableFileTest, SideMouthsWiderThanTheLongRailAreRejected) {
+  document["side_pocket"]["mouth_width_m"] = 2.5;
+  const std::string message = loadError();
+  EXPECT_MENTIONS(message, "side_pocket.mouth_width_m = 2.5");
+  EXPECT_MENTIONS(message, "long rail");
+}
+
+TEST_F(BadTableFileTest, FacingAngleOutsideItsRangeIsRejected) {
+  document["side_pocket"]["facing_angle_deg"] = 80;
+  const std::string message = loadError();
+  EXPECT_MENTIONS(message, "side_pocket.facing_angle_deg = 80");
+  EXPECT_MENTIONS(message, "(90, 180)");
+}
+
+TEST_F(BadTableFileTest, FacingsLongEnoughToCrossAreRejected) {
+  document["side_pocket"]["facing_length_m"] = 0.5;
+  EXPECT_MENTIONS(loadError(), "side_pocket.facing_length_m = 0.5");
+}
+
+TEST_F(BadTableFileTest, UnknownKindIsRejected) {
+  document["kind"] = "carom";
+  EXPECT_MENTIONS(loadError(), "kind = \"carom\"");
+}
+
+TEST_F(BadTableFileTest, MarkingsMustMatchTheKind) {
+  document["kind"] = "snooker";
+  const std::string message = loadError();
+  EXPECT_MENTIONS(message, "markings.diamond");  // one of the pool keys, whichever comes first
+  EXPECT_MENTIONS(message, "unknown key");
+}
+
+}  // namespace
+}  // namespace baize::engine
