@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/polynomial_roots.h"
 #include "physics/value_text.h"
 
 // How the solver works (the derivation is in docs/cushion.md).
@@ -97,6 +98,11 @@ constexpr double kStepMinFactor = 1.0 / 3;
 constexpr double kStepMaxFactor = 3.0;
 // First step as a fraction of M v_y0, the scale of the whole normal impulse.
 constexpr double kFirstStepFraction = 0.2;
+// The slip rate counts as affine in the friction direction when r(-x) misses r0 - W x by at most
+// this fraction of the rates' size (rounding); and a closed-form root of phi*'s equation is kept
+// when its residual is within this fraction (rounding of the quartic's roots).
+constexpr double kAffineCheckRelative = 1e-12;
+constexpr double kAffineRootRelative = 1e-9;
 // Samples on the circle when searching for the direction a contact slips off in from rest.
 constexpr int kDirectionSamples = 72;
 // The tolerances accepted: below 1e-14 the slips are not resolved in double precision; above 1e-2
@@ -359,10 +365,48 @@ class ExactImpact {
     return false;
   }
 
+  // phi* in closed form when the slip rate is affine in the friction direction d, r(d) = r0 + W d
+  // (the other contact slides or is frictionless; with it stuck its stick law makes r rational):
+  // cross(d, r0 + W d) = 0 is then A cos + B sin + C cos 2phi + D sin 2phi + E = 0, a quartic in
+  // t = tan(phi / 2). Returns false when r is not affine or no root has the slip growing.
+  bool creepDirectionAffine(int k, Laws laws, Eigen::Vector2d* result) const {
+    auto rateAlong = [&](const Eigen::Vector2d& d) {
+      laws.direction[k] = d;
+      return slipRate(k, frictionFor(laws));
+    };
+    const Eigen::Vector2d r0 = rateAlong(Eigen::Vector2d::Zero());
+    const Eigen::Vector2d wx = rateAlong(Eigen::Vector2d::UnitX()) - r0;
+    const Eigen::Vector2d wy = rateAlong(Eigen::Vector2d::UnitY()) - r0;
+    const Eigen::Vector2d check = rateAlong(-Eigen::Vector2d::UnitX());
+    if (!((check - (r0 - wx)).norm() <= kAffineCheckRelative * (r0.norm() + wx.norm())))
+      return false;
+    const double W00 = wx.x(), W10 = wx.y(), W01 = wy.x(), W11 = wy.y();
+    const physics::PolynomialCoefficients quartic = {r0.y() + W10, -2 * r0.x() + 2 * (W11 - W00),
+                                                     -2 * W10 - 4 * W01,
+                                                     -2 * r0.x() - 2 * (W11 - W00), -r0.y() + W10};
+    std::vector<double> angles;
+    for (double t : physics::realRoots(quartic)) angles.push_back(2 * std::atan(t));
+    angles.push_back(M_PI);  // t = infinity: a root when the quartic's leading term vanishes
+    double best_growth = 0;
+    for (double phi : angles) {
+      const Eigen::Vector2d d(std::cos(phi), std::sin(phi));
+      const Eigen::Vector2d r = r0 + wx * d.x() + wy * d.y();
+      if (std::abs(cross(d, r)) > kAffineRootRelative * (r0.norm() + wx.norm() + wy.norm()))
+        continue;
+      if (r.dot(d) > best_growth) {
+        best_growth = r.dot(d);
+        *result = d;
+      }
+    }
+    return best_growth > 0;
+  }
+
   // The same by a search over the whole circle (robust, for a first guess): of the directions along
   // which the slip grows along itself, the one where it grows fastest.
   Eigen::Vector2d creepDirectionSearch(int k, Laws laws) const {
     laws.stick[k] = false;
+    Eigen::Vector2d solved;
+    if (creepDirectionAffine(k, laws, &solved)) return solved;
     auto rateAlong = [&](double phi) {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
       return slipRate(k, frictionFor(laws));
