@@ -56,17 +56,41 @@ void JsonReader::reject(const std::string& key, const std::string& allowed) cons
 }
 
 void JsonReader::requireExactKeys(std::initializer_list<const char*> keys) const {
+  requireKeys(keys, {});
+}
+
+void JsonReader::requireKeys(std::initializer_list<const char*> required,
+                             std::initializer_list<const char*> optional) const {
+  std::vector<const char*> all(required);
+  all.insert(all.end(), optional.begin(), optional.end());
   std::string allowed;
-  for (const char* key : keys) allowed += (allowed.empty() ? "" : ", ") + std::string(key);
+  for (const char* key : all) allowed += (allowed.empty() ? "" : ", ") + std::string(key);
   for (const auto& item : object_.items()) {
     const bool known =
-        std::any_of(keys.begin(), keys.end(), [&](const char* key) { return item.key() == key; });
+        std::any_of(all.begin(), all.end(), [&](const char* key) { return item.key() == key; });
     if (!known) {
       throw std::invalid_argument(where(item.key()) + " = " + jsonText(item.value()) +
                                   " is not allowed: unknown key; the keys here are " + allowed);
     }
   }
-  for (const char* key : keys) value(key);
+  for (const char* key : required) value(key);
+}
+
+bool JsonReader::has(const std::string& key) const { return object_.contains(key); }
+
+Eigen::Vector2d JsonReader::point(const std::string& key) const {
+  const nlohmann::json& v = value(key);
+  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
+      !std::isfinite(v[0].get<double>()) || !std::isfinite(v[1].get<double>())) {
+    reject(key, "it must be an array of two finite numbers [x, y]");
+  }
+  return {v[0].get<double>(), v[1].get<double>()};
+}
+
+std::vector<std::string> JsonReader::keys() const {
+  std::vector<std::string> names;
+  for (const auto& item : object_.items()) names.push_back(item.key());
+  return names;
 }
 
 const nlohmann::json& JsonReader::value(const std::string& key) const {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -22,6 +23,14 @@ class JsonReader {
 
   // Throws unless the object has exactly these keys: an unknown key or a missing one is named.
   void requireExactKeys(std::initializer_list<const char*> keys) const;
+  // Throws unless every key is among `required` and `optional` and every required key is present.
+  void requireKeys(std::initializer_list<const char*> required,
+                   std::initializer_list<const char*> optional) const;
+  bool has(const std::string& key) const;
+  // A JSON array of two finite numbers, such as a position [x, y].
+  Eigen::Vector2d point(const std::string& key) const;
+  // The object's keys (sorted: nlohmann::json keeps objects ordered by key).
+  std::vector<std::string> keys() const;
 
   JsonReader object(const std::string& key) const;
   std::vector<JsonReader> objectArray(const std::string& key) const;  // a non-empty array

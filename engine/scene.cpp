@@ -1,0 +1,188 @@
+#include "engine/scene.h"
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "engine/json_reader.h"
+#include "physics/value_text.h"
+
+namespace baize::engine {
+namespace {
+
+// Balls in a scene file may overlap by this much (m) and still count as touching: positions written
+// by hand or by another program round to about this.
+constexpr double kPlacementSlack_m = 1e-9;
+
+// A built-in name, or a file path (relative to the scene's folder) when it ends in ".json".
+std::string resolvePath(const std::string& scene_source, const std::string& name) {
+  const std::filesystem::path folder = std::filesystem::path(scene_source).parent_path();
+  return (folder / name).string();
+}
+
+bool isFile(const std::string& name) {
+  return name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0;
+}
+
+void placeOrMove(std::vector<PlacedBall>* balls, const std::string& id, const Eigen::Vector2d& at) {
+  for (PlacedBall& b : *balls) {
+    if (b.id == id) {
+      b.position_m = at;
+      return;
+    }
+  }
+  balls->push_back({id, at});
+}
+
+}  // namespace
+
+Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
+  const JsonReader scene(document, source);
+  scene.requireKeys({"table", "ball_set", "shot"}, {"rack", "balls"});
+  Scene result;
+  result.source = source;
+  const std::string table = scene.text("table");
+  try {
+    result.table = isFile(table) ? loadTable(resolvePath(source, table)) : builtinTable(table);
+  } catch (const std::invalid_argument& e) {
+    scene.reject("table", std::string("a built-in table name or a .json file: ") + e.what());
+  }
+  const std::string set = scene.text("ball_set");
+  try {
+    result.ball_set = isFile(set) ? loadBallSet(resolvePath(source, set)) : builtinBallSet(set);
+  } catch (const std::invalid_argument& e) {
+    scene.reject("ball_set", std::string("a built-in ball set name or a .json file: ") + e.what());
+  }
+  if (scene.has("rack")) {
+    const JsonReader rack = scene.object("rack");
+    rack.requireKeys({"name"}, {"jitter_seed", "jitter_m"});
+    RackOptions options;
+    if (rack.has("jitter_seed")) {
+      options.jitter_seed = static_cast<std::uint64_t>(rack.integer("jitter_seed", 0, 1 << 30));
+      options.jitter_radius_m = rack.has("jitter_m") ? rack.nonNegativeNumber("jitter_m") : 0;
+      options.gap_m = std::max(options.gap_m, 2 * options.jitter_radius_m);
+    }
+    try {
+      result.balls = placeRack(rack.text("name"), result.table, result.ball_set, options);
+    } catch (const std::invalid_argument& e) {
+      rack.reject("name", e.what());
+    }
+  }
+  if (scene.has("balls")) {
+    const JsonReader placed = scene.object("balls");
+    for (const std::string& id : placed.keys()) {
+      if (!result.ball_set.contains(id)) {
+        placed.reject(id, "a ball of the set '" + result.ball_set.name + "'");
+      }
+      placeOrMove(&result.balls, id, placed.point(id));
+    }
+  }
+  if (result.balls.empty()) {
+    throw std::invalid_argument(source + ": the scene places no balls: give a rack, balls by id, or both");
+  }
+
+  const JsonReader shot = scene.object("shot");
+  shot.requireKeys({"speed_mps"},
+                   {"cue_ball", "aim_at", "heading_deg", "elevation_deg", "side", "height"});
+  result.cue_ball = shot.has("cue_ball") ? shot.text("cue_ball") : "cue";
+  const auto find = [&](const std::string& id) -> const PlacedBall* {
+    for (const PlacedBall& b : result.balls) {
+      if (b.id == id) return &b;
+    }
+    return nullptr;
+  };
+  const PlacedBall* cue = find(result.cue_ball);
+  if (!cue) shot.reject("cue_ball", "a ball placed in the scene");
+  if (shot.has("aim_at") == shot.has("heading_deg")) {
+    shot.reject(shot.has("aim_at") ? "heading_deg" : "aim_at",
+                "a shot is aimed either at a ball (aim_at) or along a heading (heading_deg), not both "
+                "and not neither");
+  }
+  double heading_rad = 0;
+  if (shot.has("aim_at")) {
+    const PlacedBall* target = find(shot.text("aim_at"));
+    if (!target || target == cue) shot.reject("aim_at", "another ball placed in the scene");
+    const Eigen::Vector2d to = target->position_m - cue->position_m;
+    heading_rad = std::atan2(to.y(), to.x());
+  } else {
+    heading_rad = shot.finiteNumber("heading_deg") * M_PI / 180;
+  }
+  result.shot.speed_mps = shot.positiveNumber("speed_mps");
+  result.shot.heading_rad = heading_rad;
+  result.shot.elevation_rad =
+      shot.has("elevation_deg") ? shot.nonNegativeNumber("elevation_deg") * M_PI / 180 : 0;
+  result.shot.side_offset = shot.has("side") ? shot.finiteNumber("side") : 0;
+  result.shot.height_offset = shot.has("height") ? shot.finiteNumber("height") : 0;
+  try {
+    physics::validateCueShot(result.shot);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(shot.where("shot") + ": " + e.what());
+  }
+
+  // Where the balls stand: on the table, apart.
+  const double R = result.ball_set.radius_m;
+  const double x_limit = result.table.length_m / 2 - R, y_limit = result.table.width_m / 2 - R;
+  for (std::size_t i = 0; i < result.balls.size(); ++i) {
+    const PlacedBall& b = result.balls[i];
+    if (std::abs(b.position_m.x()) > x_limit + kPlacementSlack_m ||
+        std::abs(b.position_m.y()) > y_limit + kPlacementSlack_m) {
+      throw std::invalid_argument(source + ": ball '" + b.id + "' at [" +
+                                  physics::valueText(b.position_m.x()) + ", " +
+                                  physics::valueText(b.position_m.y()) +
+                                  "] is off the table: |x| <= " + physics::valueText(x_limit) +
+                                  " and |y| <= " + physics::valueText(y_limit) + " m are allowed");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const double distance = (b.position_m - result.balls[j].position_m).norm();
+      if (distance < 2 * R - kPlacementSlack_m) {
+        throw std::invalid_argument(source + ": balls '" + b.id + "' and '" + result.balls[j].id +
+                                    "' overlap: their centres are " + physics::valueText(distance) +
+                                    " m apart, at least 2R = " + physics::valueText(2 * R) +
+                                    " m is allowed");
+      }
+    }
+  }
+  return result;
+}
+
+Scene loadScene(const std::string& path) { return sceneFromJson(JsonReader::parseFile(path), path); }
+
+SimulationParams simulationParamsFor(const Scene& scene) {
+  SimulationParams p = poolSimulationParams();
+  if (scene.table.kind == TableKind::Snooker) {
+    p.cloth = physics::snookerCloth();
+    p.ball_ball.restitution = 0.89;  // snooker balls (physics-notes section 3)
+  }
+  p.cloth.radius_m = scene.ball_set.radius_m;
+  p.cushion.radius_m = scene.ball_set.radius_m;
+  p.cushion.mass_kg = scene.ball_set.mass_kg;
+  p.cushion.contact_height_m = scene.table.cushion_contact_height_m;
+  p.cushion.cloth_friction = p.cloth.sliding_friction;
+  p.ball_ball.radius_m = scene.ball_set.radius_m;
+  p.ball_ball.mass1_kg = p.ball_ball.mass2_kg = scene.ball_set.mass_kg;
+  return p;
+}
+
+SceneRun runScene(const Scene& scene) {
+  const SimulationParams params = simulationParamsFor(scene);
+  physics::CueStrikeParams cue;
+  cue.ball_mass_kg = scene.ball_set.mass_kg;
+  cue.ball_radius_m = scene.ball_set.radius_m;
+  SceneRun run;
+  run.strike = physics::strikeCueBall(cue, scene.shot);
+  std::vector<physics::BallState> balls;
+  for (const PlacedBall& b : scene.balls) {
+    physics::BallState state;
+    state.position = b.position_m;
+    if (b.id == scene.cue_ball) {
+      state.velocity = run.strike.ball.v;
+      state.angular_velocity = run.strike.ball.w;
+    }
+    balls.push_back(state);
+    run.ball_ids.push_back(b.id);
+  }
+  run.result = simulate(params, geometryOf(scene.table), balls);
+  return run;
+}
+
+}  // namespace baize::engine

@@ -1,0 +1,44 @@
+// A scene: a table, a ball set, where the balls stand and the shot, read from a JSON file
+// (docs/scenes.md), and its simulation through the event loop.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "engine/ball_set.h"
+#include "engine/rack.h"
+#include "engine/shot_simulator.h"
+#include "engine/table.h"
+#include "physics/cue_strike.h"
+
+namespace baize::engine {
+
+struct Scene {
+  std::string source;  // the file it came from, for messages
+  Table table;
+  BallSet ball_set;
+  std::vector<PlacedBall> balls;  // the cue ball first
+  std::string cue_ball;           // the ball the cue strikes
+  physics::CueShot shot;          // heading already resolved from an aim at a ball
+};
+
+// Reads a scene file. Throws std::invalid_argument naming the file, the key and the value for an
+// unknown key, a missing one, a wrong type, an unknown table, ball set, rack or ball, overlapping
+// balls, a ball off the table or an impossible shot.
+Scene loadScene(const std::string& path);
+Scene sceneFromJson(const nlohmann::json& document, const std::string& source);
+
+// The physics of the scene's table and balls: pool or snooker cloth, the table's cushion height,
+// the ball set's radius and mass.
+SimulationParams simulationParamsFor(const Scene& scene);
+
+struct SceneRun {
+  physics::CueStrikeResult strike;
+  std::vector<std::string> ball_ids;  // ball i of `result` is ball_ids[i]
+  SimulationResult result;
+};
+
+// Strikes the cue ball and simulates until everything is at rest.
+SceneRun runScene(const Scene& scene);
+
+}  // namespace baize::engine

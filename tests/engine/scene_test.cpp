@@ -1,0 +1,108 @@
+#include "engine/scene.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace baize::engine {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string sceneError(const nlohmann::json& document) {
+  try {
+    sceneFromJson(document, "test.json");
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+nlohmann::json nineBall() {
+  return nlohmann::json::parse(R"({"table": "pool-9ft", "ball_set": "pool",
+    "rack": {"name": "9-ball"}, "shot": {"aim_at": "1", "speed_mps": 6.0}})");
+}
+
+// Every shipped scene loads and runs to rest; nothing gains energy and nothing leaves the table.
+TEST(Scene, ShippedScenesRunToRest) {
+  int scenes = 0;
+  for (const auto& file : std::filesystem::directory_iterator(assetsDirectory() + "/scenes")) {
+    const Scene scene = loadScene(file.path().string());
+    const SceneRun run = runScene(scene);
+    ASSERT_FALSE(run.result.events.empty()) << file.path();
+    for (const BallRecord& b : run.result.final_balls) {
+      if (b.pocketed) continue;
+      EXPECT_LE(std::abs(b.state.position.x()), scene.table.length_m / 2) << file.path();
+      EXPECT_LE(std::abs(b.state.position.y()), scene.table.width_m / 2) << file.path();
+      EXPECT_EQ(b.state.velocity.norm(), 0) << "at rest";
+    }
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 3);
+}
+
+// Aiming at a ball sends the cue ball straight at it: in a 9-ball break the 1 is hit first.
+TEST(Scene, AimAtSendsTheCueBallAtThatBallFirst) {
+  const Scene scene = sceneFromJson(nineBall(), "test.json");
+  const SceneRun run = runScene(scene);
+  const auto first = std::find_if(run.result.events.begin(), run.result.events.end(),
+                                  [](const Event& e) { return e.kind == EventKind::BallBall; });
+  ASSERT_NE(first, run.result.events.end());
+  EXPECT_EQ(run.ball_ids[first->ball], "cue");
+  EXPECT_EQ(run.ball_ids[first->other], "1");
+}
+
+// Balls given by id move the rack's balls or add balls: the cue ball goes where the scene says.
+TEST(Scene, BallsByIdPlaceOrMoveBalls) {
+  nlohmann::json doc = nineBall();
+  doc["balls"] = {{"cue", {-0.5, 0.2}}};
+  const Scene scene = sceneFromJson(doc, "test.json");
+  EXPECT_EQ(scene.balls.front().id, "cue");
+  EXPECT_EQ(scene.balls.front().position_m, Eigen::Vector2d(-0.5, 0.2));
+  EXPECT_EQ(scene.balls.size(), 10u);
+}
+
+TEST(Scene, BadScenesAreRejectedNamingTheKeyAndValue) {
+  nlohmann::json doc = nineBall();
+  doc["tabel"] = "pool-9ft";
+  EXPECT_THAT(sceneError(doc), HasSubstr("tabel"));
+  EXPECT_THAT(sceneError(doc), HasSubstr("unknown key"));
+
+  doc = nineBall();
+  doc.erase("shot");
+  EXPECT_THAT(sceneError(doc), HasSubstr("shot is missing"));
+
+  doc = nineBall();
+  doc["table"] = "pool-11ft";
+  EXPECT_THAT(sceneError(doc), HasSubstr("pool-11ft"));
+
+  doc = nineBall();
+  doc["balls"] = {{"17", {0, 0}}};
+  EXPECT_THAT(sceneError(doc), HasSubstr("balls.17"));
+
+  doc = nineBall();
+  doc["balls"] = {{"cue", {0.635, 0.0}}};  // on the foot spot, where the 1 stands
+  EXPECT_THAT(sceneError(doc), HasSubstr("overlap"));
+
+  doc = nineBall();
+  doc["balls"] = {{"cue", {2.0, 0.0}}};
+  EXPECT_THAT(sceneError(doc), HasSubstr("off the table"));
+
+  doc = nineBall();
+  doc["shot"]["heading_deg"] = 10;
+  EXPECT_THAT(sceneError(doc), HasSubstr("not both"));
+
+  doc = nineBall();
+  doc["shot"]["speed_mps"] = -1;
+  EXPECT_THAT(sceneError(doc), HasSubstr("shot.speed_mps = -1"));
+
+  doc = nineBall();
+  doc["shot"]["side"] = 0.7;  // beyond the miscue limit
+  EXPECT_THAT(sceneError(doc), HasSubstr("shot"));
+
+  EXPECT_THROW(loadScene("/nonexistent/scene.json"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace baize::engine

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# baize simulate, run the way a user runs it: the shipped scenes, --json, and bad input.
+# Usage: simulate_cli_test.sh path/to/baize
+set -euo pipefail
+baize=$1
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# The 9-ball break: the summary names the first ball hit (the 1: the shot aims at it) and the rest.
+out=$("$baize" simulate "$root/assets/scenes/9-ball-break.json") || fail "9-ball break exited $?"
+grep -q "^first ball hit: 1$" <<<"$out" || fail "first ball hit: $out"
+for line in "^pocketed:" "^cushions and jaws touched: [0-9]" "^events: [0-9]" "^wall time:"; do
+  grep -q "$line" <<<"$out" || fail "missing '$line' in: $out"
+done
+
+# --json: the events in time order and a final state for each of the 10 balls.
+"$baize" simulate "$root/assets/scenes/9-ball-break.json" --json "$work/break.json" >/dev/null ||
+  fail "--json exited $?"
+python3 - "$work/break.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+times = [e["time_s"] for e in d["events"]]
+assert times == sorted(times), "events in time order"
+assert len(d["final"]) == 10, len(d["final"])
+assert d["first_ball_hit"] == "1", d["first_ball_hit"]
+assert {b["id"] for b in d["final"]} == {"cue"} | {str(i) for i in range(1, 10)}
+PY
+[[ -f "$work/break.json.tmp" ]] && fail "a temporary file was left behind"
+
+# Bad input: exit 2, a message naming the key; nothing written.
+cat >"$work/bad.json" <<'JSON'
+{"table": "pool-9ft", "ball_set": "pool", "rack": {"name": "9-ball"},
+ "shot": {"aim_at": "1", "speed_mps": 6, "spin": 3}}
+JSON
+set +e
+msg=$("$baize" simulate "$work/bad.json" --json "$work/never.json" 2>&1 >/dev/null); status=$?
+set -e
+[[ $status -eq 2 ]] || fail "bad scene exited $status, expected 2"
+grep -q "shot.spin" <<<"$msg" || fail "message does not name shot.spin: $msg"
+[[ -e "$work/never.json" || -e "$work/never.json.tmp" ]] && fail "output written for a bad scene"
+set +e
+msg=$("$baize" simulate "$work/missing.json" 2>&1 >/dev/null); status=$?
+set -e
+[[ $status -ne 0 ]] || fail "a missing scene file was accepted"
+grep -q "missing.json" <<<"$msg" || fail "message does not name the file: $msg"
+echo "simulate CLI: all checks passed"

@@ -1,0 +1,13 @@
+// `baize simulate SCENE.json [--json OUT.json]`: strikes the scene's cue ball, simulates the shot to
+// rest on its table and prints what happened (docs/scenes.md).
+#pragma once
+
+namespace CLI {
+class App;
+}
+
+namespace baize::tools {
+
+void addSimulateCommand(CLI::App& parent);
+
+}  // namespace baize::tools
