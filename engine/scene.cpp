@@ -163,8 +163,9 @@ SimulationParams simulationParamsFor(const Scene& scene) {
   return p;
 }
 
-SceneRun runScene(const Scene& scene) {
-  const SimulationParams params = simulationParamsFor(scene);
+SceneRun runScene(const Scene& scene, bool record_trajectories) {
+  SimulationParams params = simulationParamsFor(scene);
+  params.record_trajectories = record_trajectories;
   physics::CueStrikeParams cue;
   cue.ball_mass_kg = scene.ball_set.mass_kg;
   cue.ball_radius_m = scene.ball_set.radius_m;

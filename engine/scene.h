@@ -38,7 +38,8 @@ struct SceneRun {
   SimulationResult result;
 };
 
-// Strikes the cue ball and simulates until everything is at rest.
-SceneRun runScene(const Scene& scene);
+// Strikes the cue ball and simulates until everything is at rest (recording the balls' trajectories
+// when asked).
+SceneRun runScene(const Scene& scene, bool record_trajectories = false);
 
 }  // namespace baize::engine

@@ -26,6 +26,12 @@ assert times == sorted(times), "events in time order"
 assert len(d["final"]) == 10, len(d["final"])
 assert d["first_ball_hit"] == "1", d["first_ball_hit"]
 assert {b["id"] for b in d["final"]} == {"cue"} | {str(i) for i in range(1, 10)}
+# Trajectories: per ball, pieces starting at 0 in time order; the cue ball's first piece is the strike.
+assert set(d["trajectories"]) == {b["id"] for b in d["final"]}
+for pieces in d["trajectories"].values():
+    starts = [q["start_time_s"] for q in pieces]
+    assert starts[0] == 0 and starts == sorted(starts), starts
+assert d["trajectories"]["cue"][0]["velocity_mps"][0] > 5, "struck at break speed"
 PY
 [[ -f "$work/break.json.tmp" ]] && fail "a temporary file was left behind"
 

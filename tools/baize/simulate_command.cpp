@@ -32,7 +32,7 @@ void runSimulate(const SimulateFlags& flags) {
   if (!flags.json_path.empty()) json_file = std::make_unique<AtomicFile>(flags.json_path, "--json");
   const engine::Scene scene = engine::loadScene(flags.scene);
   const auto start = std::chrono::steady_clock::now();
-  const engine::SceneRun run = engine::runScene(scene);
+  const engine::SceneRun run = engine::runScene(scene, /*record_trajectories=*/json_file != nullptr);
   const double wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const engine::SimulationResult& r = run.result;
@@ -99,6 +99,16 @@ void runSimulate(const SimulateFlags& flags) {
       ball["id"] = id(static_cast<int>(i));
       ball["pocketed"] = r.final_balls[i].pocketed;
       out["final"].push_back(ball);
+      // The exact path: from each piece's start the ball moves in closed form (physics/cloth_motion.h
+      // `advance`) from that state until the next piece.
+      nlohmann::json pieces = nlohmann::json::array();
+      for (const engine::TrajectoryPiece& piece : r.trajectories[i]) {
+        nlohmann::json q = stateJson(piece.state);
+        q["start_time_s"] = piece.start_time_s;
+        q["pocketed"] = piece.pocketed;
+        pieces.push_back(q);
+      }
+      out["trajectories"][id(static_cast<int>(i))] = pieces;
     }
     json_file->stream() << std::setprecision(17) << out.dump(2) << '\n';
     json_file->commit();
