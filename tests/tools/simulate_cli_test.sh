@@ -51,4 +51,15 @@ msg=$("$baize" simulate "$work/missing.json" 2>&1 >/dev/null); status=$?
 set -e
 [[ $status -ne 0 ]] || fail "a missing scene file was accepted"
 grep -q "missing.json" <<<"$msg" || fail "message does not name the file: $msg"
+# baize bench shots, smoke size: one row per shipped scene plus the random set, the CSV as printed.
+"$baize" bench shots --repeat 1 --random-shots 20 --csv "$work/shots.csv" >/dev/null ||
+  fail "bench shots exited $?"
+python3 - "$work/shots.csv" "$root/assets/scenes" <<'PY'
+import csv, os, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert list(rows[0]) == ["scene", "median_us", "events"], list(rows[0])
+scenes = sorted(f[:-5] for f in os.listdir(sys.argv[2]) if f.endswith(".json"))
+assert [r["scene"] for r in rows] == scenes + ["random-single-shots"], [r["scene"] for r in rows]
+assert all(float(r["median_us"]) > 0 and float(r["events"]) >= 1 for r in rows)
+PY
 echo "simulate CLI: all checks passed"

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "tools/baize/bench_cushion_command.h"
+#include "tools/baize/bench_shots_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_command.h"
 #include "tools/baize/simulate_command.h"
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   CLI::App* bench = app.add_subcommand("bench", "Measure the speed and accuracy of the models");
   bench->require_subcommand(1, 1);
   addBenchCushionCommand(*bench);
+  addBenchShotsCommand(*bench);
 
   try {
     app.parse(argc, argv);

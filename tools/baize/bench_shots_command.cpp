@@ -1,0 +1,131 @@
+#include "tools/baize/bench_shots_command.h"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <random>
+#include <sstream>
+
+#include "engine/scene.h"
+#include "tools/baize/atomic_file.h"
+#include "tools/baize/cli_errors.h"
+
+namespace baize::tools {
+namespace {
+
+struct BenchShotsFlags {
+  std::string csv_path;
+  int repeat = 21;          // timed runs per scene; the median is reported
+  int random_shots = 1000;  // random single shots
+};
+
+double median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+// Median wall time of simulating `scene` (microseconds) and its event count.
+std::pair<double, std::size_t> timeScene(const engine::Scene& scene, int repeat) {
+  std::vector<double> times;
+  std::size_t events = 0;
+  for (int i = 0; i < repeat; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    const engine::SceneRun run = engine::runScene(scene);
+    times.push_back(
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+    events = run.result.events.size();
+  }
+  return {median(times), events};
+}
+
+// A seeded set of single shots on the 9 ft table: the cue ball and one object ball anywhere, the
+// cue ball struck at 0.5-4 m/s in any direction with any tip offset. Each shot's own event count.
+std::vector<engine::Scene> randomShots(int count) {
+  std::mt19937_64 engine(20261121);
+  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53); };
+  engine::Scene base;
+  base.table = engine::builtinTable("pool-9ft");
+  base.ball_set = engine::builtinBallSet("pool");
+  base.cue_ball = "cue";
+  const double R = base.ball_set.radius_m;
+  const double x = base.table.length_m / 2 - R, y = base.table.width_m / 2 - R;
+  std::vector<engine::Scene> shots;
+  while (static_cast<int>(shots.size()) < count) {
+    engine::Scene s = base;
+    s.balls = {{"cue", {uniform(-x, x), uniform(-y, y)}}, {"1", {uniform(-x, x), uniform(-y, y)}}};
+    if ((s.balls[0].position_m - s.balls[1].position_m).norm() < 2 * R) continue;
+    s.shot.speed_mps = uniform(0.5, 4);
+    s.shot.heading_rad = uniform(-M_PI, M_PI);
+    const double offset = uniform(0, 0.45), angle = uniform(-M_PI, M_PI);
+    s.shot.side_offset = offset * std::cos(angle);
+    s.shot.height_offset = offset * std::sin(angle);
+    shots.push_back(s);
+  }
+  return shots;
+}
+
+void runBenchShots(const BenchShotsFlags& flags) {
+  if (flags.repeat < 1) rejectFlag("--repeat", flags.repeat, "it must be >= 1");
+  if (flags.random_shots < 1) rejectFlag("--random-shots", flags.random_shots, "it must be >= 1");
+  std::optional<AtomicFile> csv;
+  if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
+  std::ostringstream table;
+  table << "scene,median_us,events\n";
+  std::vector<std::filesystem::path> files;
+  for (const auto& f : std::filesystem::directory_iterator(engine::assetsDirectory() + "/scenes")) {
+    files.push_back(f.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    const auto [us, events] = timeScene(engine::loadScene(f.string()), flags.repeat);
+    table << f.stem().string() << ',' << std::setprecision(4) << us << ',' << events << '\n';
+  }
+  const std::vector<engine::Scene> shots = randomShots(flags.random_shots);
+  std::vector<double> times, events;
+  const auto all_start = std::chrono::steady_clock::now();
+  for (const engine::Scene& s : shots) {
+    const auto start = std::chrono::steady_clock::now();
+    const engine::SceneRun run = engine::runScene(s);
+    times.push_back(
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+    events.push_back(static_cast<double>(run.result.events.size()));
+  }
+  const double all_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - all_start).count();
+  table << "random-single-shots," << std::setprecision(4) << median(times) << ','
+        << median(events) << '\n';
+  std::cout << table.str();
+  std::cout << "random single shots: " << std::setprecision(4) << shots.size() / all_s
+            << " shots/s on one core (" << shots.size() << " shots; median events as above)\n";
+  if (csv) {
+    csv->stream() << table.str();
+    csv->commit();
+    std::cout << "wrote " << flags.csv_path << '\n';
+  }
+}
+
+}  // namespace
+
+void addBenchShotsCommand(CLI::App& parent) {
+  auto flags = std::make_shared<BenchShotsFlags>();
+  CLI::App* command = parent.add_subcommand(
+      "shots", "Time whole shots: the shipped scenes and a seeded set of random single shots");
+  command->add_option("--csv", flags->csv_path, "also write the table to this CSV file");
+  command->add_option("--repeat", flags->repeat, "timed runs per scene (median)")
+      ->capture_default_str();
+  command->add_option("--random-shots", flags->random_shots, "random single shots")
+      ->capture_default_str();
+  command->callback([flags] {
+    if (const int status = runReportingErrors("bench shots", [&] { runBenchShots(*flags); })) {
+      throw CLI::RuntimeError(status);
+    }
+  });
+}
+
+}  // namespace baize::tools
