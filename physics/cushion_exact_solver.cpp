@@ -866,18 +866,13 @@ CushionImpactResult ExactImpact::run() {
     }
     const Step step = rungeKuttaStep(z, k1, h);
     // Events are judged before the error, which may be large only because of what lies beyond them.
-    int first = -1;
-    double first_estimate = std::numeric_limits<double>::infinity();
+    // Every event the step crossed is located, and the step lands on the earliest: estimates from the
+    // step's ends could order them wrongly (a cone margin is far from linear in the step).
+    std::vector<int> crossed;
     for (int i = 0; i < static_cast<int>(events.size()); ++i) {
-      const double g0 = eventValue(events[i], z), g1 = eventValue(events[i], step.z);
-      if (g1 > 0) continue;
-      const double estimate = g0 > 0 ? g0 / (g0 - g1) : 0;
-      if (estimate < first_estimate) {
-        first_estimate = estimate;
-        first = i;
-      }
+      if (eventValue(events[i], step.z) <= 0) crossed.push_back(i);
     }
-    if (first < 0) {
+    if (crossed.empty()) {
       if (step.error <= 1) {
         if (tracing) sampleInside(z, k1, h, step.z, step.rate_at_end);
         z = step.z;
@@ -890,12 +885,25 @@ CushionImpactResult ExactImpact::run() {
       h *= stepFactor(step.error);
       continue;
     }
+    int first = -1;
     Step landed;
-    double length = 0;
-    if (!locate(events[first], z, k1, h, step, &length, &landed)) {
-      h = length;
-      continue;
+    double length = std::numeric_limits<double>::infinity();
+    bool retry = false;
+    for (int i : crossed) {
+      Step candidate;
+      double candidate_length = 0;
+      if (!locate(events[i], z, k1, h, step, &candidate_length, &candidate)) {
+        h = std::min(retry ? h : candidate_length, candidate_length);
+        retry = true;
+        continue;
+      }
+      if (candidate_length < length) {
+        length = candidate_length;
+        landed = candidate;
+        first = i;
+      }
     }
+    if (retry) continue;  // a located stretch broke the tolerance: a shorter step first
     if (tracing && length > 0) sampleInside(z, k1, length, landed.z, landed.rate_at_end);
     z = landed.z;
     updateCreepGuesses(z);

@@ -3,12 +3,17 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 
 namespace baize::engine {
 namespace {
 
 using ::testing::HasSubstr;
+
+// See NineBallBreakIsPinnedBitForBit.
+constexpr std::uint64_t kPinnedNineBallBreakHash = 1851688471253013543ULL;
 
 std::string sceneError(const nlohmann::json& document) {
   try {
@@ -102,6 +107,36 @@ TEST(Scene, BadScenesAreRejectedNamingTheKeyAndValue) {
   EXPECT_THAT(sceneError(doc), HasSubstr("shot"));
 
   EXPECT_THROW(loadScene("/nonexistent/scene.json"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace baize::engine
+
+namespace baize::engine {
+namespace {
+
+// Bit-for-bit determinism, pinned: a hash of every event's time and every final state of the shipped
+// 9-ball break. A change of compiler flags (FMA contraction), library or evaluation order that moves
+// any bit shows up here. When the physics is changed on purpose, the new value is taken from the
+// failure message after checking that the other tests still hold.
+TEST(Scene, NineBallBreakIsPinnedBitForBit) {
+  const SceneRun run = runScene(loadScene(assetsDirectory() + "/scenes/9-ball-break.json"));
+  std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a
+  auto mix = [&](double value) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    for (int byte = 0; byte < 8; ++byte) {
+      hash ^= (bits >> (8 * byte)) & 0xff;
+      hash *= 1099511628211ULL;
+    }
+  };
+  for (const Event& e : run.result.events) mix(e.time_s);
+  for (const BallRecord& b : run.result.final_balls) {
+    mix(b.state.position.x());
+    mix(b.state.position.y());
+    mix(b.pocketed ? 1.0 : 0.0);
+  }
+  EXPECT_EQ(hash, kPinnedNineBallBreakHash) << "new hash: " << hash << "ULL";
 }
 
 }  // namespace
