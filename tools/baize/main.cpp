@@ -6,6 +6,7 @@
 #include "tools/baize/bench_cushion_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_command.h"
+#include "tools/baize/stress_command.h"
 
 int main(int argc, char** argv) {
   using namespace baize::tools;
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1, 1);
 
   addCushionCommand(app);
+  addStressCommand(app);
 
   CLI::App* bench = app.add_subcommand("bench", "Measure the speed and accuracy of the models");
   bench->require_subcommand(1, 1);
