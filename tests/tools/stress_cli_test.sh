@@ -23,7 +23,7 @@ fail() {
 status=0
 "$baize" stress --shots 2000 --seed 1 >"$work/out.txt" 2>"$work/err.txt" || status=$?
 summary=$(grep '^stress: ' "$work/out.txt") || fail "no summary line in: $(cat "$work/out.txt")"
-[[ $summary =~ ^stress:\ shots\ 2000,\ events\ ([0-9]+),\ failed\ shots\ ([0-9]+),\ failures\ (.*),\ largest\ energy\ growth\ .*shots/s$ ]] ||
+[[ $summary =~ ^stress:\ shots\ 2000,\ events\ ([0-9]+),\ failed\ shots\ ([0-9]+),\ failed\ shots\ by\ kind\ (.*),\ largest\ energy\ growth\ .*shots/s$ ]] ||
   fail "summary line not in the expected form: $summary"
 events=${BASH_REMATCH[1]}
 failed=${BASH_REMATCH[2]}

@@ -218,7 +218,7 @@ bool finite(const BallState& b) {
 }
 
 struct ShotCheck {
-  std::map<std::string, long> failures;  // kind -> count within the shot
+  std::map<std::string, long> failures;  // kind -> events failing that way within the shot
   std::string first_message;
   void fail(const std::string& kind, const std::string& message) {
     if (failures.empty()) first_message = kind + ": " + message;
@@ -326,7 +326,7 @@ void runStress(const StressFlags& flags) {
   const engine::TableGeometry table = engine::rectangularTable(kTableLength_m, kTableWidth_m);
   const double R = params.cushion.radius_m;
 
-  std::map<std::string, long> failures_by_kind;
+  std::map<std::string, long> failures_by_kind;  // kind -> shots failing that way
   long events = 0, failed_shots = 0;
   double worst_energy_growth = 0;
   const auto started = std::chrono::steady_clock::now();
@@ -340,7 +340,7 @@ void runStress(const StressFlags& flags) {
     worst_energy_growth = std::max(worst_energy_growth, outcome.worst_energy_growth);
     if (outcome.check.failures.empty()) continue;
     ++failed_shots;
-    for (const auto& [what, count] : outcome.check.failures) failures_by_kind[what] += count;
+    for (const auto& entry : outcome.check.failures) ++failures_by_kind[entry.first];  // shots, not events
     if (failed_shots <= kMaxReportedShots) {
       nlohmann::json repro = {{"seed", flags.seed}, {"shot", shot}, {"scene", sceneKindName(kind)},
                               {"first_failure", outcome.check.first_message},
@@ -350,7 +350,7 @@ void runStress(const StressFlags& flags) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::cout << "stress: shots " << flags.shots << ", events " << events << ", failed shots " << failed_shots
-            << ", failures";
+            << ", failed shots by kind";
   if (failures_by_kind.empty()) std::cout << " none";
   for (const auto& [what, count] : failures_by_kind) std::cout << ' ' << what << '=' << count;
   std::cout.precision(3);
