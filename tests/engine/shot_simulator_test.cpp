@@ -34,6 +34,24 @@ double energy(const physics::ClothParams& cloth, const BallState& b) {
   return physics::specificKineticEnergy(cloth, b);
 }
 
+// The invariants every event keeps: nothing gains energy, and colliding balls touch at 2R. Returns
+// how many ball-ball events there were.
+int expectEventInvariants(const SimulationParams& p, const SimulationResult& r) {
+  const double R = p.cushion.radius_m;
+  int collisions = 0;
+  for (const Event& e : r.events) {
+    double before = 0, after = 0;
+    for (const BallState& b : e.before) before += energy(p.cloth, b);
+    for (const BallState& b : e.after) after += energy(p.cloth, b);
+    EXPECT_LE(after, before * (1 + 1e-12) + 1e-15) << eventKindName(e.kind) << " at " << e.time_s;
+    if (e.kind == EventKind::BallBall) {
+      ++collisions;
+      EXPECT_NEAR((e.before[0].position - e.before[1].position).norm(), 2 * R, kContactTolerance_m);
+    }
+  }
+  return collisions;
+}
+
 // A ball struck without spin slides, rolls on at 5/7 of its speed after 12 v^2 / (49 mu_s g), and
 // stops after another (5/7 v)^2 / (2 mu_r g).
 TEST(ShotSimulator, StunShotSlidesRollsAndStopsWhereTheClosedFormSays) {
@@ -116,17 +134,8 @@ TEST(ShotSimulator, RandomScenesKeepEnergyFallingAndBallsApartAndOnTheTable) {
     balls[0].velocity = {speed * std::cos(angle), speed * std::sin(angle), 0};
     balls[0].angular_velocity = {uniform(-50, 50), uniform(-50, 50), uniform(-50, 50)};
     const SimulationResult r = simulate(p, table, balls);
-    for (const Event& e : r.events) {
-      double before = 0, after = 0;
-      for (const BallState& b : e.before) before += energy(p.cloth, b);
-      for (const BallState& b : e.after) after += energy(p.cloth, b);
-      EXPECT_LE(after, before * (1 + 1e-12) + 1e-15) << eventKindName(e.kind) << " at " << e.time_s;
-      if (e.kind == EventKind::BallBall) {
-        ++collisions;
-        EXPECT_NEAR((e.before[0].position - e.before[1].position).norm(), 2 * R, kContactTolerance_m);
-      }
-      if (e.kind == EventKind::Cushion) ++cushion_hits;
-    }
+    collisions += expectEventInvariants(p, r);
+    for (const Event& e : r.events) cushion_hits += e.kind == EventKind::Cushion;
     for (int i = 0; i < n; ++i) {
       const Eigen::Vector2d q = r.final_balls[i].state.position;
       EXPECT_LE(std::abs(q.x()), L / 2 - R + kContactTolerance_m);
@@ -258,19 +267,7 @@ TEST(ShotSimulator, NineBallBreakOnTheShippedTableKeepsItsInvariants) {
   balls[0].velocity = {8 * aim.x(), 8 * aim.y() + 0.05, 0};
   const TableGeometry geometry = geometryOf(table);
   const SimulationResult r = simulate(p, geometry, balls);
-  const double R = p.cushion.radius_m;
-  int collisions = 0;
-  for (const Event& e : r.events) {
-    double before = 0, after = 0;
-    for (const BallState& b : e.before) before += energy(p.cloth, b);
-    for (const BallState& b : e.after) after += energy(p.cloth, b);
-    EXPECT_LE(after, before * (1 + 1e-12) + 1e-15) << eventKindName(e.kind) << " at " << e.time_s;
-    if (e.kind == EventKind::BallBall) {
-      ++collisions;
-      EXPECT_NEAR((e.before[0].position - e.before[1].position).norm(), 2 * R, kContactTolerance_m);
-    }
-  }
-  EXPECT_GT(collisions, 9) << "the break spreads the rack";
+  EXPECT_GT(expectEventInvariants(p, r), 9) << "the break spreads the rack";
   for (const BallRecord& b : r.final_balls) {
     if (b.pocketed) continue;
     EXPECT_LE(std::abs(b.state.position.x()), table.length_m / 2) << "on the table";
