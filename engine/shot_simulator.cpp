@@ -364,14 +364,23 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     if (best.dt_s < 0) best.dt_s = 0;     // rounding of the absolute time
     // A state change happens exactly at the ball's transition time, where advanceWithinState sets
     // the next state exactly (the absolute time round trip may have moved it by a rounding).
-    if (best.kind == EventKind::StateChange) best.dt_s = until[best.ball];
+    if (best.kind == EventKind::StateChange) {
+      if (!(until[best.ball] < kInfinity)) {  // a stale prediction: the ball is already at rest
+        dirty[best.ball] = true;
+        continue;
+      }
+      best.dt_s = until[best.ball];
+    }
 
     // Move every ball to the event's instant.
     for (int i = 0; i < n; ++i) {
       if (balls[i].pocketed) continue;
       const double dt = std::min(best.dt_s, until[i]);
+      const physics::MotionState was = physics::motionState(p.cloth, balls[i].state);
       if (dt > 0) balls[i].state = physics::advanceWithinState(p.cloth, balls[i].state, dt);
-      if (dt == until[i]) dirty[i] = true;  // its motion changed on the way: predict it again
+      // Its motion changed on the way (at its transition time, or a rounding before it): predict it
+      // again.
+      if (dt == until[i] || physics::motionState(p.cloth, balls[i].state) != was) dirty[i] = true;
     }
     now += best.dt_s;
     last = best;
@@ -436,6 +445,11 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         result.trajectories[best.other].push_back({now, balls[best.other].state, false});
     }
     result.events.push_back(std::move(event));
+  }
+  // Balls at rest are reported exactly at rest (a speed below the at-rest threshold, left by a
+  // transition a rounding early, is not motion).
+  for (BallRecord& b : balls) {
+    if (!b.pocketed) b.state = physics::advanceWithinState(p.cloth, b.state, 0);
   }
   result.final_balls = balls;
   result.end_time_s = now;
