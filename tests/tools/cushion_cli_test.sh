@@ -144,6 +144,8 @@ expect_error 2 "--solver: foo" cushion --solver foo
 expect_error 2 "--steps = 0 is not allowed" cushion --solver paper --steps 0
 expect_error 2 "--tolerance = -1 is not allowed" cushion --tolerance -1
 expect_error 2 "(set by --tolerance)" cushion --solver exact --tolerance 1e-30
+expect_error 2 "--steps sets the paper solver's increments" cushion --steps 100
+expect_error 2 "--tolerance sets the exact solver's accuracy" cushion --solver paper --tolerance 1e-6
 expect_error 2 "(set by --mu-w)" cushion --mu-w 0.9
 expect_error 2 "(set by --mass)" cushion --mass -0.1
 expect_error 2 "(set by --h)" cushion --h 0.01

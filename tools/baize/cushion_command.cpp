@@ -26,6 +26,8 @@ struct CushionFlags {
   bool json = false;
   std::string sweep_directory;
   CLI::Option* sweep_flag = nullptr;
+  CLI::Option* steps_flag = nullptr;      // the paper solver's only
+  CLI::Option* tolerance_flag = nullptr;  // the exact solver's only
 };
 
 // The checks that belong to the flags themselves. The parameters' ranges are the physics' to
@@ -41,6 +43,15 @@ void validateFlags(const CushionFlags& flags) {
   }
   requireFiniteFlag("--topspin", shot.topspin_k);
   requireFiniteFlag("--sidespin", shot.sidespin_k);
+  // A flag the chosen solver would ignore is refused: a user who sets it expects it to matter.
+  if (flags.solver == "exact" && flags.steps_flag->count() > 0) {
+    throw UsageError(
+        "--steps sets the paper solver's increments; with --solver exact use --tolerance");
+  }
+  if (flags.solver == "paper" && flags.tolerance_flag->count() > 0) {
+    throw UsageError(
+        "--tolerance sets the exact solver's accuracy; with --solver paper use --steps");
+  }
   if (flags.setting.paper_steps < 1) {
     rejectFlag("--steps", flags.setting.paper_steps, "it must be >= 1");
   }
@@ -231,12 +242,13 @@ void addCushionCommand(CLI::App& parent) {
   command->add_option("--solver", flags->solver, "paper (Euler in P, section 3.4) or exact")
       ->check(CLI::IsMember({"paper", "exact"}))
       ->capture_default_str();
-  command->add_option("--steps", flags->setting.paper_steps, "paper solver: increments N")
-      ->capture_default_str();
-  command
-      ->add_option("--tolerance", flags->setting.exact_tolerance,
-                   "exact solver: local error per step relative to V0")
-      ->capture_default_str();
+  flags->steps_flag =
+      command->add_option("--steps", flags->setting.paper_steps, "paper solver: increments N")
+          ->capture_default_str();
+  flags->tolerance_flag = command
+                              ->add_option("--tolerance", flags->setting.exact_tolerance,
+                                           "exact solver: local error per step relative to V0")
+                              ->capture_default_str();
 
   command->add_option("--mass", flags->params.mass_kg, "ball mass (kg)")->capture_default_str();
   command->add_option("--radius", flags->params.radius_m, "ball radius (m)")->capture_default_str();
