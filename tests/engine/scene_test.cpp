@@ -13,6 +13,8 @@ namespace {
 using ::testing::HasSubstr;
 
 // See NineBallBreakIsPinnedBitForBit.
+// The bound on overlap at any event (m): rounding of positions of order 1 m, with room.
+constexpr double kOverlapTolerance_m = 1e-9;
 constexpr std::uint64_t kPinnedNineBallBreakHash = 1851688471253013543ULL;
 
 std::string sceneError(const nlohmann::json& document) {
@@ -36,11 +38,19 @@ TEST(Scene, ShippedScenesRunToRest) {
     const Scene scene = loadScene(file.path().string());
     const SceneRun run = runScene(scene);
     ASSERT_FALSE(run.result.events.empty()) << file.path();
-    for (const BallRecord& b : run.result.final_balls) {
+    const std::vector<BallRecord>& final_balls = run.result.final_balls;
+    for (std::size_t i = 0; i < final_balls.size(); ++i) {
+      const BallRecord& b = final_balls[i];
       if (b.pocketed) continue;
       EXPECT_LE(std::abs(b.state.position.x()), scene.table.length_m / 2) << file.path();
       EXPECT_LE(std::abs(b.state.position.y()), scene.table.width_m / 2) << file.path();
       EXPECT_EQ(b.state.velocity.norm(), 0) << "at rest";
+      for (std::size_t j = 0; j < i; ++j) {
+        if (final_balls[j].pocketed) continue;
+        EXPECT_GE((b.state.position - final_balls[j].state.position).norm(),
+                  2 * scene.ball_set.radius_m - kOverlapTolerance_m)
+            << file.path() << ": balls " << i << " and " << j << " overlap at rest";
+      }
     }
     ++scenes;
   }
@@ -115,10 +125,10 @@ TEST(Scene, BadScenesAreRejectedNamingTheKeyAndValue) {
 namespace baize::engine {
 namespace {
 
-// Bit-for-bit determinism, pinned: a hash of every event's time and every final state of the shipped
-// 9-ball break. A change of compiler flags (FMA contraction), library or evaluation order that moves
-// any bit shows up here. When the physics is changed on purpose, the new value is taken from the
-// failure message after checking that the other tests still hold.
+// Bit-for-bit determinism, pinned: a hash of every event's time and every final state of the
+// shipped 9-ball break. A change of compiler flags (FMA contraction), library or evaluation order
+// that moves any bit shows up here. When the physics is changed on purpose, the new value is taken
+// from the failure message after checking that the other tests still hold.
 TEST(Scene, NineBallBreakIsPinnedBitForBit) {
   const SceneRun run = runScene(loadScene(assetsDirectory() + "/scenes/9-ball-break.json"));
   std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a
