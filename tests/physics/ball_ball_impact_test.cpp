@@ -13,10 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "tests/physics/rejection_test_support.h"
+
 namespace baize::physics {
 namespace {
 
 using Eigen::Vector3d;
+using test::expectValueRejected;
 using ::testing::HasSubstr;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -25,8 +28,8 @@ constexpr double kDeg = kPi / 180;
 // Tolerances. "Relative" means relative to the speed scale of the impact (largest |v| or R |w|).
 // Closed-form model (FrictionalInelastic): a handful of operations, so a few ulp of the scale.
 constexpr double kAlgebraicRelative = 1e-13;
-// Mathavan2014 at the default tolerance (1e-11 per step): measured worst 1.2e-11 against a 1e-14 run
-// over 2000 random impacts; 1e-9 leaves room for the step sequence to differ between runs.
+// Mathavan2014 at the default tolerance (1e-11 per step): measured worst 1.2e-11 against a 1e-14
+// run over 2000 random impacts; 1e-9 leaves room for the step sequence to differ between runs.
 constexpr double kIntegratedRelative = 1e-9;
 // Energy may stay equal (e = 1, no friction) up to round-off, never grow beyond it.
 constexpr double kEnergyRoundoffRelative = 1e-12;
@@ -96,8 +99,10 @@ std::vector<Impact> randomImpacts(std::uint64_t seed, int count) {
   std::vector<Impact> out;
   while (static_cast<int>(out.size()) < count) {
     Impact i;
-    i.b1 = ballOf({3 * r.uniform(), 3 * r.uniform(), 0}, 120 * Vector3d(r.uniform(), r.uniform(), r.uniform()));
-    i.b2 = ballOf({1.5 * r.uniform(), 1.5 * r.uniform(), 0}, 60 * Vector3d(r.uniform(), r.uniform(), r.uniform()));
+    i.b1 = ballOf({3 * r.uniform(), 3 * r.uniform(), 0},
+                  120 * Vector3d(r.uniform(), r.uniform(), r.uniform()));
+    i.b2 = ballOf({1.5 * r.uniform(), 1.5 * r.uniform(), 0},
+                  60 * Vector3d(r.uniform(), r.uniform(), r.uniform()));
     const double angle = kPi * r.uniform();
     i.n = {std::cos(angle), std::sin(angle), 0};
     if (approachSpeed(i.b1, i.b2, i.n) < 0) i.n = -i.n;
@@ -229,7 +234,8 @@ TEST(BallBallImpact, FrictionlessEnergeticRestitutionEqualsNewtons) {
     // A grazing contact (approach 1e-7 of the speed scale) is resolved just as finely.
     const BallVelocity grazing = ballOf({1e-7, 1.0, 0}, {10, 20, 30});
     const auto g = resolveBallBallImpact(p, grazing, BallVelocity{}, Vector3d::UnitX());
-    EXPECT_NEAR(approachSpeed(g.ball1, g.ball2, Vector3d::UnitX()), -e * 1e-7, kIntegratedRelative * 1e-7);
+    EXPECT_NEAR(approachSpeed(g.ball1, g.ball2, Vector3d::UnitX()), -e * 1e-7,
+                kIntegratedRelative * 1e-7);
   }
 }
 
@@ -245,7 +251,8 @@ TEST(BallBallImpact, ThirtyDegreeRuleForRollingCueBall) {
   for (double cut_deg = 0.5; cut_deg < 89.5; cut_deg += 0.05) {
     const double cut = cut_deg * kDeg;
     const BallVelocity cue = rollingBall({1.2, 0, 0}, R);
-    const auto r = resolveBallBallImpact(p, cue, BallVelocity{}, {std::cos(cut), -std::sin(cut), 0});
+    const auto r =
+        resolveBallBallImpact(p, cue, BallVelocity{}, {std::cos(cut), -std::sin(cut), 0});
     const Vector3d final_velocity = rolledVelocity(r.ball1, R);
     // The object ball goes off to the right (-y), so the cue ball turns left (+y).
     const double deflection = std::atan2(final_velocity.y(), final_velocity.x()) / kDeg;
@@ -286,8 +293,10 @@ TEST(BallBallImpact, FollowReducesThrowInBothModels) {
     const Vector3d n(std::cos(30 * kDeg), -std::sin(30 * kDeg), 0);
     const BallVelocity stun = ballOf({1.0, 0, 0}, Vector3d::Zero());
     const BallVelocity follow = rollingBall({1.0, 0, 0}, R);
-    const double stun_throw = throwAngleDeg(resolveBallBallImpact(p, stun, BallVelocity{}, n), n, stun.v);
-    const double roll_throw = throwAngleDeg(resolveBallBallImpact(p, follow, BallVelocity{}, n), n, follow.v);
+    const double stun_throw =
+        throwAngleDeg(resolveBallBallImpact(p, stun, BallVelocity{}, n), n, stun.v);
+    const double roll_throw =
+        throwAngleDeg(resolveBallBallImpact(p, follow, BallVelocity{}, n), n, follow.v);
     EXPECT_GT(stun_throw, 0.5);
     EXPECT_LT(stun_throw, 6.0);
     EXPECT_GT(roll_throw, 0.0);
@@ -318,7 +327,8 @@ TEST(BallBallImpact, FrictionalInelasticCapLeavesFreeBodySlipZero) {
   const auto r = resolveBallBallImpact(p, cue, BallVelocity{}, n);
   ASSERT_TRUE(r.contact_rolling_from_impulse_Ns.has_value());
   const Vector3d slip = contactSlip(p, r.ball1, r.ball2, n);
-  const double removed = r.discarded_vertical_velocity_mps[0] - r.discarded_vertical_velocity_mps[1];
+  const double removed =
+      r.discarded_vertical_velocity_mps[0] - r.discarded_vertical_velocity_mps[1];
   EXPECT_LE((slip + removed * Vector3d::UnitZ()).norm(), kAlgebraicRelative * 1.5);
   EXPECT_GT(removed, 0.0);  // topspin: friction lifts the cue ball and presses the object ball down
   EXPECT_GT(r.table_normal_impulse_Ns[1], 0.0);
@@ -326,7 +336,8 @@ TEST(BallBallImpact, FrictionalInelasticCapLeavesFreeBodySlipZero) {
 }
 
 TEST(BallBallImpact, MathavanContactRollsOnceItsSlipVanishes) {
-  // Stun, nearly full hit: the small sideways slip is used up early; from then on the contact rolls.
+  // Stun, nearly full hit: the small sideways slip is used up early; from then on the contact
+  // rolls.
   const BallBallParams p = snookerMathavan2014Params();
   const Vector3d n(std::cos(5 * kDeg), -std::sin(5 * kDeg), 0);
   const BallVelocity cue = ballOf({1.0, 0, 0}, Vector3d::Zero());
@@ -344,15 +355,16 @@ TEST(BallBallImpact, MathavanRollingCueBallPressesTheObjectBallIntoTheCloth) {
   // Head-on rolling cue ball: its contact point moves down, so friction lifts the cue ball and
   // presses the object ball down; only the object ball takes a table reaction, and its cloth slip
   // points along +n throughout (it starts at rest and is pushed forward), so the cloth changes the
-  // pair's momentum by exactly -mu_s N2 n. (The measured shots below cannot see this: cloth friction
-  // never changes the velocity a ball ends with once it rolls.)
+  // pair's momentum by exactly -mu_s N2 n. (The measured shots below cannot see this: cloth
+  // friction never changes the velocity a ball ends with once it rolls.)
   const BallBallParams p = snookerMathavan2014Params();
   const BallVelocity cue = rollingBall({1.2, 0, 0}, p.radius_m);
   const auto r = resolveBallBallImpact(p, cue, BallVelocity{}, Vector3d::UnitX());
   EXPECT_EQ(r.table_normal_impulse_Ns[0], 0.0);
   EXPECT_GT(r.table_normal_impulse_Ns[1], 0.0);
   EXPECT_GT(r.discarded_vertical_velocity_mps[0], 0.0);  // the cue ball would hop
-  EXPECT_NEAR(r.discarded_vertical_velocity_mps[1], -r.table_normal_impulse_Ns[1] / p.mass2_kg, 1e-15);
+  EXPECT_NEAR(r.discarded_vertical_velocity_mps[1], -r.table_normal_impulse_Ns[1] / p.mass2_kg,
+              1e-15);
   // While slipping, the vertical friction is mu_b per unit normal impulse (the slip is vertical).
   EXPECT_NEAR(r.table_normal_impulse_Ns[1], p.ball_friction * r.normal_impulse_Ns,
               kIntegratedRelative * r.normal_impulse_Ns);
@@ -377,8 +389,10 @@ TEST(BallBallImpact, ModelsAgreeWithoutSpinAboutTheTangent) {
   int capped = 0;
   for (int k = 0; k < 200; ++k) {
     const Vector3d n(1, 0, 0);  // frame in which w_t is w_y
-    const BallVelocity b1 = ballOf({1 + rng.uniform(), rng.uniform(), 0}, {50 * rng.uniform(), 0, 80 * rng.uniform()});
-    const BallVelocity b2 = ballOf({0.5 * rng.uniform(), rng.uniform(), 0}, {50 * rng.uniform(), 0, 80 * rng.uniform()});
+    const BallVelocity b1 =
+        ballOf({1 + rng.uniform(), rng.uniform(), 0}, {50 * rng.uniform(), 0, 80 * rng.uniform()});
+    const BallVelocity b2 = ballOf({0.5 * rng.uniform(), rng.uniform(), 0},
+                                   {50 * rng.uniform(), 0, 80 * rng.uniform()});
     if (approachSpeed(b1, b2, n) < 0.05) continue;
     const auto a = resolveBallBallImpact(algebraic, b1, b2, n);
     const auto m = resolveBallBallImpact(mathavan, b1, b2, n);
@@ -457,7 +471,8 @@ TEST(BallBallImpact, MathavanAdaptiveSolutionIsConverged) {
   for (const Impact& i : randomImpacts(31, 300)) {
     const auto r = resolveBallBallImpact(p, i.b1, i.b2, i.n);
     const auto best = resolveBallBallImpact(reference, i.b1, i.b2, i.n);
-    EXPECT_LE(maxStateDifference(r, best, p.radius_m), kIntegratedRelative * speedScale(p, i.b1, i.b2));
+    EXPECT_LE(maxStateDifference(r, best, p.radius_m),
+              kIntegratedRelative * speedScale(p, i.b1, i.b2));
   }
 }
 
@@ -538,7 +553,8 @@ TEST(BallBallImpact, MathavanAgreesWithMeasuredSnookerShots) {
     const ShotOutcome o = playShot(s);
     const double cue_bound = k == 0 ? kFirstShotCueDiscrepancy : kMeasuredSpeedTolerance;
     EXPECT_NEAR(o.cue_rolled.norm(), s.measured_cue_mps, cue_bound) << "shot " << k;
-    EXPECT_NEAR(o.object_rolled.norm(), s.measured_object_mps, kMeasuredSpeedTolerance) << "shot " << k;
+    EXPECT_NEAR(o.object_rolled.norm(), s.measured_object_mps, kMeasuredSpeedTolerance)
+        << "shot " << k;
   }
 }
 
@@ -560,16 +576,6 @@ TEST(BallBallImpact, MathavanReproducesThePublishedModelValues) {
 // ---------------------------------------------------------------------------------------------
 // Bad input
 
-void expectRejected(const std::function<void()>& call, const std::string& fragment) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception; expected one mentioning \"" << fragment << "\"";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_THAT(error.what(), HasSubstr(fragment));
-    EXPECT_THAT(error.what(), HasSubstr("is not allowed"));
-  }
-}
-
 TEST(BallBallImpact, RejectsBadContacts) {
   const BallBallParams p = poolParams();
   const BallVelocity moving = ballOf({1, 0, 0}, Vector3d::Zero());
@@ -578,16 +584,19 @@ TEST(BallBallImpact, RejectsBadContacts) {
   auto resolve = [&](BallVelocity a, BallVelocity b, Vector3d n) {
     return [=] { resolveBallBallImpact(p, a, b, n); };
   };
-  expectRejected(resolve(moving, resting, {1.1, 0, 0}), "line of centres |n|");
-  expectRejected(resolve(moving, resting, {0.8, 0, 0.6}), "line of centres n_z");
-  expectRejected(resolve(moving, resting, {nan, 0, 0}), "line of centres n_x");
-  expectRejected(resolve(ballOf({nan, 0, 0}, Vector3d::Zero()), resting, Vector3d::UnitX()), "ball 1 v_x");
-  expectRejected(resolve(moving, ballOf(Vector3d::Zero(), {0, nan, 0}), Vector3d::UnitX()), "ball 2 w_y");
-  expectRejected(resolve(ballOf({1, 0, 0.1}, Vector3d::Zero()), resting, Vector3d::UnitX()), "ball 1 v_z");
+  expectValueRejected(resolve(moving, resting, {1.1, 0, 0}), "line of centres |n|");
+  expectValueRejected(resolve(moving, resting, {0.8, 0, 0.6}), "line of centres n_z");
+  expectValueRejected(resolve(moving, resting, {nan, 0, 0}), "line of centres n_x");
+  expectValueRejected(resolve(ballOf({nan, 0, 0}, Vector3d::Zero()), resting, Vector3d::UnitX()),
+                      "ball 1 v_x");
+  expectValueRejected(resolve(moving, ballOf(Vector3d::Zero(), {0, nan, 0}), Vector3d::UnitX()),
+                      "ball 2 w_y");
+  expectValueRejected(resolve(ballOf({1, 0, 0.1}, Vector3d::Zero()), resting, Vector3d::UnitX()),
+                      "ball 1 v_z");
   // Separating, and grazing (no normal approach): the caller must not ask for an impact.
-  expectRejected(resolve(moving, resting, -Vector3d::UnitX()), "approach speed");
-  expectRejected(resolve(moving, resting, Vector3d::UnitY()), "approach speed");
-  expectRejected(resolve(resting, resting, Vector3d::UnitX()), "approach speed");
+  expectValueRejected(resolve(moving, resting, -Vector3d::UnitX()), "approach speed");
+  expectValueRejected(resolve(moving, resting, Vector3d::UnitY()), "approach speed");
+  expectValueRejected(resolve(resting, resting, Vector3d::UnitX()), "approach speed");
 }
 
 TEST(BallBallImpact, RejectsBadParameters) {
@@ -597,17 +606,25 @@ TEST(BallBallImpact, RejectsBadParameters) {
     return [=] { resolveBallBallImpact(p, moving, BallVelocity{}, Vector3d::UnitX()); };
   };
   const BallBallParams pool = poolParams(), snooker = snookerMathavan2014Params();
-  expectRejected(with([](auto& p) { p.mass1_kg = -0.1; }, pool), "ball 1 mass (kg)");
-  expectRejected(with([](auto& p) { p.radius_m = 0; }, pool), "ball radius (m)");
-  expectRejected(with([](auto& p) { p.restitution = 1.2; }, pool), "ball-ball restitution e");
-  expectRejected(with([](auto& p) { p.restitution = std::nan(""); }, snooker), "ball-ball restitution e");
-  expectRejected(with([](auto& p) { p.friction_fit_b = 1.0; }, pool), "friction fit a + b");
-  expectRejected(with([](auto& p) { p.friction_law = BallBallFrictionLaw::Constant; p.constant_friction = -0.1; }, pool),
-                 "ball-ball friction mu");
-  expectRejected(with([](auto& p) { p.ball_friction = 0.4; }, snooker), "ball-ball friction mu_b");
-  expectRejected(with([](auto& p) { p.cloth_friction = 1.0; }, snooker), "cloth friction mu_s");
-  expectRejected(with([](auto& p) { p.tolerance = 0; }, snooker), "integration tolerance");
-  expectRejected(with([](auto& p) { p.fixed_steps = -5; }, snooker), "fixed Euler steps");
+  expectValueRejected(with([](auto& p) { p.mass1_kg = -0.1; }, pool), "ball 1 mass (kg)");
+  expectValueRejected(with([](auto& p) { p.radius_m = 0; }, pool), "ball radius (m)");
+  expectValueRejected(with([](auto& p) { p.restitution = 1.2; }, pool), "ball-ball restitution e");
+  expectValueRejected(with([](auto& p) { p.restitution = std::nan(""); }, snooker),
+                      "ball-ball restitution e");
+  expectValueRejected(with([](auto& p) { p.friction_fit_b = 1.0; }, pool), "friction fit a + b");
+  expectValueRejected(with(
+                          [](auto& p) {
+                            p.friction_law = BallBallFrictionLaw::Constant;
+                            p.constant_friction = -0.1;
+                          },
+                          pool),
+                      "ball-ball friction mu");
+  expectValueRejected(with([](auto& p) { p.ball_friction = 0.4; }, snooker),
+                      "ball-ball friction mu_b");
+  expectValueRejected(with([](auto& p) { p.cloth_friction = 1.0; }, snooker),
+                      "cloth friction mu_s");
+  expectValueRejected(with([](auto& p) { p.tolerance = 0; }, snooker), "integration tolerance");
+  expectValueRejected(with([](auto& p) { p.fixed_steps = -5; }, snooker), "fixed Euler steps");
 }
 
 }  // namespace

@@ -11,11 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "tests/physics/rejection_test_support.h"
+
 namespace baize::physics {
 namespace {
 
 using Eigen::Vector2d;
 using Eigen::Vector3d;
+using test::expectRejected;
 
 // Closed-form values against the formulas they come from: a few dozen roundings of the inputs.
 constexpr double kRoundingRelative = 1e-13;
@@ -559,15 +562,6 @@ TEST(ClothMotionTest, Rk4ThroughTheTransitionsConvergesToTheClosedForm) {
 }
 
 // ---- Inputs -------------------------------------------------------------------------------------
-
-void expectRejected(const std::function<void()>& call, const std::string& needle) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception; expected one mentioning " << needle;
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
-}
 
 TEST(ClothMotionTest, PresetsAreValidAndMatchTheMeasuredValues) {
   EXPECT_NO_THROW(validateClothParams(poolCloth()));

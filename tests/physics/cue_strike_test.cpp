@@ -12,10 +12,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "tests/physics/rejection_test_support.h"
+
 namespace baize::physics {
 namespace {
 
 using Eigen::Vector3d;
+using test::expectValueRejected;
 using ::testing::HasSubstr;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -125,7 +128,8 @@ TEST(CueStrike, SquirtTurnsTheBallAwayFromTheOffsetSide) {
     s.side_offset = side;
     const CueStrikeResult a = strikeCueBall(plain, s);
     const CueStrikeResult b = strikeCueBall(squirting, s);
-    // physics-notes section 4: tan(alpha) = (5/2) b_r sqrt(1 - b_r^2) / (1 + m/m_end + (5/2)(1 - b_r^2)).
+    // physics-notes section 4: tan(alpha) = (5/2) b_r sqrt(1 - b_r^2) / (1 + m/m_end + (5/2)(1 -
+    // b_r^2)).
     const double q = 1 - side * side;
     const double expected = std::atan(2.5 * side * std::sqrt(q) / (1 + 0.170 / 0.010 + 2.5 * q));
     const Vector3d aim = aimOf(0.4);
@@ -150,7 +154,8 @@ TEST(CueStrike, LinearInCueSpeed) {
       s.speed_mps = speed;
       const CueStrikeResult r = strikeCueBall(p, s);
       EXPECT_LE((r.ball.v - speed * one.ball.v).norm(), kRelative * speed * one.ball.v.norm());
-      EXPECT_LE((r.ball.w - speed * one.ball.w).norm(), kRelative * speed * one.ball.w.norm() + 1e-300);
+      EXPECT_LE((r.ball.w - speed * one.ball.w).norm(),
+                kRelative * speed * one.ball.w.norm() + 1e-300);
     }
   }
 }
@@ -164,10 +169,12 @@ TEST(CueStrike, BallNeverGetsMoreEnergyThanTheCueGaveUp) {
     const CueShot s = randomShot(rng);
     const CueStrikeResult r = strikeCueBall(p, s);
     const double delivered =
-        0.5 * p.cue_mass_kg * (s.speed_mps * s.speed_mps - r.cue_speed_after_mps * r.cue_speed_after_mps);
+        0.5 * p.cue_mass_kg *
+        (s.speed_mps * s.speed_mps - r.cue_speed_after_mps * r.cue_speed_after_mps);
     const double scale = 0.5 * p.cue_mass_kg * s.speed_mps * s.speed_mps;
     EXPECT_LE(ballEnergy(p, fullVelocity(r), r.ball.w), delivered + kRelative * scale);
-    EXPECT_LE(ballEnergy(p, r.ball.v, r.ball.w), ballEnergy(p, fullVelocity(r), r.ball.w) + kRelative * scale);
+    EXPECT_LE(ballEnergy(p, r.ball.v, r.ball.w),
+              ballEnergy(p, fullVelocity(r), r.ball.w) + kRelative * scale);
   }
 }
 
@@ -187,7 +194,8 @@ TEST(CueStrike, ElasticTipConservesEnergyAndSatisfiesNewtonsLawAtTheTip) {
                 p.tip_restitution * s.speed_mps, kRelative * 10 * s.speed_mps);
     if (p.tip_restitution == 1.0) {
       const double delivered =
-          0.5 * p.cue_mass_kg * (s.speed_mps * s.speed_mps - r.cue_speed_after_mps * r.cue_speed_after_mps);
+          0.5 * p.cue_mass_kg *
+          (s.speed_mps * s.speed_mps - r.cue_speed_after_mps * r.cue_speed_after_mps);
       EXPECT_NEAR(ballEnergy(p, fullVelocity(r), r.ball.w), delivered, kRelative * 10 * scale);
     }
   }
@@ -200,10 +208,10 @@ TEST(CueStrike, ContactGeometry) {
   for (int k = 0; k < 500; ++k) {
     const CueShot s = randomShot(rng);
     const CueStrikeResult r = strikeCueBall(p, s);
-    EXPECT_NEAR(r.contact_point_m.norm(), R, kRelative * R);            // Q on the ball
+    EXPECT_NEAR(r.contact_point_m.norm(), R, kRelative * R);                 // Q on the ball
     EXPECT_NEAR(r.contact_point_m.z(), s.height_offset * R, kRelative * R);  // b is a height
-    EXPECT_LT(r.contact_point_m.dot(r.cue_axis), 0.0);                  // Q faces the cue
-    EXPECT_NEAR(r.cue_axis.z(), -std::sin(s.elevation_rad), kRelative);  // the cue points down
+    EXPECT_LT(r.contact_point_m.dot(r.cue_axis), 0.0);                       // Q faces the cue
+    EXPECT_NEAR(r.cue_axis.z(), -std::sin(s.elevation_rad), kRelative);      // the cue points down
     // The cue line's distance from the centre, computed from the geometry.
     EXPECT_NEAR(r.cue_line_offset_m, r.contact_point_m.cross(r.cue_axis).norm(), kRelative * R);
     // The cloth takes the downward part.
@@ -232,16 +240,6 @@ TEST(CueStrike, ContactGeometry) {
   EXPECT_GT(draw.ball.w.dot(aimOf(0).cross(Vector3d::UnitZ())), 0.0);
 }
 
-void expectRejected(const std::function<void()>& call, const std::string& fragment) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception; expected one mentioning \"" << fragment << "\"";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_THAT(error.what(), HasSubstr(fragment));
-    EXPECT_THAT(error.what(), HasSubstr("is not allowed"));
-  }
-}
-
 TEST(CueStrike, RejectsBadShots) {
   const CueStrikeParams p;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -251,18 +249,21 @@ TEST(CueStrike, RejectsBadShots) {
     change(s);
     return [=] { strikeCueBall(p, s); };
   };
-  expectRejected(shot([&](CueShot& s) { s.speed_mps = nan; }), "cue speed V (m/s) = nan");
-  expectRejected(shot([](CueShot& s) { s.speed_mps = -0.5; }), "cue speed V (m/s) = -0.5");
-  expectRejected(shot([&](CueShot& s) { s.heading_rad = INFINITY; }), "cue heading phi (rad)");
-  expectRejected(shot([](CueShot& s) { s.elevation_rad = -0.1; }), "cue elevation theta (rad)");
-  expectRejected(shot([](CueShot& s) { s.elevation_rad = kPi / 2; }), "cue elevation theta (rad)");
-  expectRejected(shot([&](CueShot& s) { s.side_offset = nan; }), "tip side offset a");
+  expectValueRejected(shot([&](CueShot& s) { s.speed_mps = nan; }), "cue speed V (m/s) = nan");
+  expectValueRejected(shot([](CueShot& s) { s.speed_mps = -0.5; }), "cue speed V (m/s) = -0.5");
+  expectValueRejected(shot([&](CueShot& s) { s.heading_rad = INFINITY; }), "cue heading phi (rad)");
+  expectValueRejected(shot([](CueShot& s) { s.elevation_rad = -0.1; }),
+                      "cue elevation theta (rad)");
+  expectValueRejected(shot([](CueShot& s) { s.elevation_rad = kPi / 2; }),
+                      "cue elevation theta (rad)");
+  expectValueRejected(shot([&](CueShot& s) { s.side_offset = nan; }), "tip side offset a");
   // Miscue: offset just above the limit, in either direction.
-  expectRejected(shot([](CueShot& s) { s.side_offset = 0.51; }), "miscues");
-  expectRejected(shot([](CueShot& s) { s.side_offset = 0.36, s.height_offset = -0.36; }), "miscues");
+  expectValueRejected(shot([](CueShot& s) { s.side_offset = 0.51; }), "miscues");
+  expectValueRejected(shot([](CueShot& s) { s.side_offset = 0.36, s.height_offset = -0.36; }),
+                      "miscues");
   // A steep cue cannot reach a low contact point from behind.
-  expectRejected(shot([](CueShot& s) { s.height_offset = -0.5, s.elevation_rad = 1.5; }),
-                 "the cue line meets the ball behind");
+  expectValueRejected(shot([](CueShot& s) { s.height_offset = -0.5, s.elevation_rad = 1.5; }),
+                      "the cue line meets the ball behind");
   // The limit itself is allowed.
   EXPECT_NO_THROW(shot([](CueShot& s) { s.side_offset = kMiscueOffsetLimit; })());
 }
@@ -275,11 +276,15 @@ TEST(CueStrike, RejectsBadParameters) {
     s.speed_mps = 1;
     return [=] { strikeCueBall(p, s); };
   };
-  expectRejected(params([](CueStrikeParams& p) { p.cue_mass_kg = 0; }), "cue mass (kg) = 0");
-  expectRejected(params([](CueStrikeParams& p) { p.tip_restitution = 1.5; }), "cue tip restitution e_tip = 1.5");
-  expectRejected(params([](CueStrikeParams& p) { p.ball_mass_kg = -1; }), "ball mass (kg) = -1");
-  expectRejected(params([](CueStrikeParams& p) { p.ball_radius_m = std::nan(""); }), "ball radius (m)");
-  expectRejected(params([](CueStrikeParams& p) { p.end_mass_kg = 0.0; }), "cue end mass (kg) = 0");
+  expectValueRejected(params([](CueStrikeParams& p) { p.cue_mass_kg = 0; }), "cue mass (kg) = 0");
+  expectValueRejected(params([](CueStrikeParams& p) { p.tip_restitution = 1.5; }),
+                      "cue tip restitution e_tip = 1.5");
+  expectValueRejected(params([](CueStrikeParams& p) { p.ball_mass_kg = -1; }),
+                      "ball mass (kg) = -1");
+  expectValueRejected(params([](CueStrikeParams& p) { p.ball_radius_m = std::nan(""); }),
+                      "ball radius (m)");
+  expectValueRejected(params([](CueStrikeParams& p) { p.end_mass_kg = 0.0; }),
+                      "cue end mass (kg) = 0");
 }
 
 }  // namespace

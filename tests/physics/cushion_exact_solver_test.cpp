@@ -18,11 +18,13 @@
 
 #include "physics/cushion_paper_solver.h"
 #include "tests/physics/cushion_test_support.h"
+#include "tests/physics/rejection_test_support.h"
 
 namespace baize::physics {
 namespace {
 
 using test::degrees;
+using test::expectRejected;
 using test::FloatingPointTraps;
 using test::RandomImpacts;
 using test::velocityDifference;
@@ -75,7 +77,8 @@ CushionParams grippyParams(RandomImpacts& random) {
 
 // Without friction only v_y changes, at the constant rate -c/M (c = cos theta). Compression ends at
 // P_c = M v_y0 / c with W_c = int c v_y dP = M v_y0^2 / 2; restitution ends when the work released,
-// M v_y'^2 / 2, is e^2 W_c: v_y' = -e v_y0 at P_f = (1 + e) M v_y0 / c. Everything else is unchanged.
+// M v_y'^2 / 2, is e^2 W_c: v_y' = -e v_y0 at P_f = (1 + e) M v_y0 / c. Everything else is
+// unchanged.
 TEST(CushionExactSolver, FrictionlessLimitIsExact) {
   RandomImpacts random(kSeed);
   for (int i = 0; i < 200; ++i) {
@@ -92,12 +95,14 @@ TEST(CushionExactSolver, FrictionlessLimitIsExact) {
         << "impact " << i << ": v_y' = " << result.after.v.y() << ", -e v_y0 = " << -e * vy0;
     const double impulse_scale = M * V0 / c, work_scale = M * V0 * V0;
     EXPECT_NEAR(result.compression_impulse_Ns, M * vy0 / c, kFrictionlessRelative * impulse_scale);
-    EXPECT_NEAR(result.final_impulse_Ns, (1 + e) * M * vy0 / c, kFrictionlessRelative * impulse_scale);
+    EXPECT_NEAR(result.final_impulse_Ns, (1 + e) * M * vy0 / c,
+                kFrictionlessRelative * impulse_scale);
     EXPECT_NEAR(result.compression_work_J, M * vy0 * vy0 / 2, kFrictionlessRelative * work_scale);
   }
 }
 
-// --- 2. energy -------------------------------------------------------------------------------------
+// --- 2. energy
+// -------------------------------------------------------------------------------------
 
 // The normal force at I does net work -(1 - e^2) W_c; friction forces only dissipate (or, stuck, do
 // no work); the table's normal force does none (its contact point has no vertical velocity). Hence
@@ -111,7 +116,8 @@ TEST(CushionExactSolver, KineticEnergyNeverGrowsOverThousandsOfRandomImpacts) {
     const double before = kineticEnergy(p, impact.incoming);
     const double after = kineticEnergy(p, result.after);
     const double e = p.restitution;
-    EXPECT_LE(after, before - (1 - e * e) * result.compression_work_J + kEnergySlackRelative * before)
+    EXPECT_LE(after,
+              before - (1 - e * e) * result.compression_work_J + kEnergySlackRelative * before)
         << "impact " << i;
     EXPECT_GT(result.compression_work_J, 0) << "impact " << i;
     EXPECT_GT(result.compression_impulse_Ns, 0) << "impact " << i;
@@ -138,7 +144,8 @@ TEST(CushionExactSolver, FrictionlessEnergyLossIsTheRestitutionLoss) {
   }
 }
 
-// --- 3. mirror symmetry ----------------------------------------------------------------------------
+// --- 3. mirror symmetry
+// ----------------------------------------------------------------------------
 
 // The reflection x -> -x maps solutions to solutions: v -> (-vx, vy, vz) (a vector) and
 // w -> (wx, -wy, -wz) (a pseudovector). For the incoming ball that is alpha -> pi - alpha with the
@@ -148,8 +155,8 @@ TEST(CushionExactSolver, MirroredIncomingBallGivesTheMirroredOutcome) {
   for (int i = 0; i < 300; ++i) {
     const test::RandomImpact impact = random.next(true);
     const double V0 = impact.speed_mps;
-    const BallVelocity image_in = incomingBall(V0, test::kPi - impact.alpha_rad, impact.topspin_radps,
-                                               -impact.sidespin_radps);
+    const BallVelocity image_in = incomingBall(V0, test::kPi - impact.alpha_rad,
+                                               impact.topspin_radps, -impact.sidespin_radps);
     EXPECT_LT(velocityDifference(image_in, test::mirrored(impact.incoming), impact.params.radius_m),
               kRoundoffRelative * V0);
     const CushionImpactResult direct = solveExact(impact.params, impact.incoming);
@@ -164,7 +171,8 @@ TEST(CushionExactSolver, MirroredIncomingBallGivesTheMirroredOutcome) {
   }
 }
 
-// --- 4. linear scaling -----------------------------------------------------------------------------
+// --- 4. linear scaling
+// -----------------------------------------------------------------------------
 
 // The rates depend only on slip directions, which scaling every velocity by lambda leaves alone;
 // so P scales by lambda, every output velocity by lambda and the work by lambda^2. The rebound
@@ -226,13 +234,15 @@ TEST(CushionExactSolver, ErrorShrinksWithTheTolerance) {
   std::vector<BallVelocity> converged;
   for (int i = 0; i < 50; ++i) {
     impacts.push_back(random.next(true));
-    converged.push_back(solveExact(impacts.back().params, impacts.back().incoming, kConvergedTolerance).after);
+    converged.push_back(
+        solveExact(impacts.back().params, impacts.back().incoming, kConvergedTolerance).after);
   }
   double previous_worst = std::numeric_limits<double>::infinity();
   for (double tolerance : {1e-5, 1e-7, 1e-9, 1e-11}) {
     double worst = 0;
     for (std::size_t i = 0; i < impacts.size(); ++i) {
-      const BallVelocity after = solveExact(impacts[i].params, impacts[i].incoming, tolerance).after;
+      const BallVelocity after =
+          solveExact(impacts[i].params, impacts[i].incoming, tolerance).after;
       worst = std::max(worst, velocityDifference(after, converged[i], impacts[i].params.radius_m) /
                                   impacts[i].speed_mps);
     }
@@ -274,9 +284,9 @@ TEST(CushionExactSolver, ConvergedSolutionAgreesWithTheExtrapolatedPaperSchemeOn
                                {"Fig. 10", 2.0, 45, 1.5, 2.0}};
   for (const NamedImpact& example : cases) {
     const double V0 = example.speed_mps, R = p.radius_m;
-    const BallVelocity in = incomingBall(V0, degrees(example.alpha_deg),
-                                         example.topspin_per_roll * V0 / R,
-                                         example.sidespin_per_roll * V0 / R);
+    const BallVelocity in =
+        incomingBall(V0, degrees(example.alpha_deg), example.topspin_per_roll * V0 / R,
+                     example.sidespin_per_roll * V0 / R);
     const BallVelocity converged = solveExact(p, in, kConvergedTolerance).after;
     EXPECT_LT(velocityDifference(richardson(p, in, kRichardsonSteps, 1), converged, R),
               kRichardsonSmoothAgreement * V0)
@@ -306,7 +316,8 @@ TEST(CushionExactSolver, ConvergedSolutionAgreesWithTheExtrapolatedPaperSchemeOn
                                                      p.mass_kg * impact.incoming.v.y() / 1000);
     double smallest_slip = std::numeric_limits<double>::infinity();
     for (const ImpactSample& sample : converged.trace) {
-      smallest_slip = std::min({smallest_slip, sample.cushion_slip.norm(), sample.cloth_slip.norm()});
+      smallest_slip =
+          std::min({smallest_slip, sample.cushion_slip.norm(), sample.cloth_slip.norm()});
     }
     const bool is_smooth = smallest_slip > kSmoothSlipFloor * V0;
     (is_smooth ? smooth : vanishing) += 1;
@@ -321,7 +332,8 @@ TEST(CushionExactSolver, ConvergedSolutionAgreesWithTheExtrapolatedPaperSchemeOn
   EXPECT_GT(vanishing, 0);
 }
 
-// --- 11. trace, events and the Coulomb law ----------------------------------------------------------
+// --- 11. trace, events and the Coulomb law
+// ----------------------------------------------------------
 
 // The mode of `contact` at impulse P according to the list of changes (a change applies from its
 // impulse on).
@@ -376,17 +388,19 @@ TEST(CushionExactSolver, SlippingContactsStartInSlipMode) {
   EXPECT_EQ(result.contact_changes[1].mode, ContactMode::Slip);
 }
 
-// Head-on with natural roll the cloth slip is zero at P = 0. Holding it there needs a cloth friction
-// rate b_y = -(c + (5/2 - s) a_y) / (7/2) (from d(v_y + R w_x)/dP = 0 with impulseResponse), with
-// a_y = -mu_w (the cushion slip is -(1 + s) V0 along Y'); it sticks if |b_y| <= mu_s q, where
-// q = s - mu_w c is the table's normal impulse rate. Snooker values: |b_y| = 0.1779 and
-// q = 0.2717, so the cloth holds for mu_s >= 0.655: it slips at once on snooker cloth (0.212) and
-// at 0.55, and sticks at 0.7 and 0.8 (both sides of the cone's edge).
+// Head-on with natural roll the cloth slip is zero at P = 0. Holding it there needs a cloth
+// friction rate b_y = -(c + (5/2 - s) a_y) / (7/2) (from d(v_y + R w_x)/dP = 0 with
+// impulseResponse), with a_y = -mu_w (the cushion slip is -(1 + s) V0 along Y'); it sticks if |b_y|
+// <= mu_s q, where q = s - mu_w c is the table's normal impulse rate. Snooker values: |b_y| =
+// 0.1779 and q = 0.2717, so the cloth holds for mu_s >= 0.655: it slips at once on snooker cloth
+// (0.212) and at 0.55, and sticks at 0.7 and 0.8 (both sides of the cone's edge).
 TEST(CushionExactSolver, InitialClothModeForARollingHeadOnBallFollowsTheFrictionCone) {
   const struct {
     double mu_s;
     ContactMode expected;
-  } cases[] = {{0.212, ContactMode::Slip}, {0.55, ContactMode::Slip}, {0.7, ContactMode::Stick},
+  } cases[] = {{0.212, ContactMode::Slip},
+               {0.55, ContactMode::Slip},
+               {0.7, ContactMode::Stick},
                {0.8, ContactMode::Stick}};
   for (const auto& example : cases) {
     CushionParams p;
@@ -442,7 +456,8 @@ RecoveredFriction recoverFriction(const CushionParams& p, const BallVelocity& be
 // A trace spacing larger than any impact keeps only the step and event samples, which are the
 // integrator's own states (the samples in between are interpolated for plots).
 constexpr double kStepSamplesOnly_Ns = 1e3;
-// Finite differences over a step of states accurate to about 1e-10 V0: relative error far below this.
+// Finite differences over a step of states accurate to about 1e-10 V0: relative error far below
+// this.
 constexpr double kCoulombRelative = 1e-6;
 // A stuck contact's slip stays below this fraction of V0 (it is zero to the event tolerance).
 constexpr double kStuckSlipRelative = 1e-8;
@@ -459,8 +474,8 @@ TEST(CushionExactSolver, TraceObeysCoulombWhileSlippingAndTheConeWhileStuck) {
     const double V0 = impact.speed_mps;
     const double s = sinTheta(p), c = cosTheta(p);
     const double mu[2] = {p.cushion_friction, p.cloth_friction};
-    const CushionImpactResult result = solveExact(p, impact.incoming, ExactSolverOptions{}.tolerance,
-                                                  kStepSamplesOnly_Ns);
+    const CushionImpactResult result =
+        solveExact(p, impact.incoming, ExactSolverOptions{}.tolerance, kStepSamplesOnly_Ns);
     const std::vector<ImpactSample>& trace = result.trace;
     ASSERT_GE(trace.size(), 2u);
     const double min_gap = 1e-6 * result.final_impulse_Ns;  // shorter gaps: too noisy to difference
@@ -469,7 +484,8 @@ TEST(CushionExactSolver, TraceObeysCoulombWhileSlippingAndTheConeWhileStuck) {
       const ImpactSample& to = trace[n + 1];
       const double dP = to.impulse_Ns - from.impulse_Ns;
       ASSERT_GE(dP, 0) << "samples in impulse order";
-      if (dP < min_gap || changeInside(result.contact_changes, from.impulse_Ns, to.impulse_Ns)) continue;
+      if (dP < min_gap || changeInside(result.contact_changes, from.impulse_Ns, to.impulse_Ns))
+        continue;
       SCOPED_TRACE("impact " + std::to_string(i) + ", P = " + std::to_string(from.impulse_Ns));
       const RecoveredFriction f = recoverFriction(p, from.ball, to.ball, dP);
       EXPECT_LT(std::abs(f.w_y_residual_radps_per_Ns),
@@ -488,7 +504,8 @@ TEST(CushionExactSolver, TraceObeysCoulombWhileSlippingAndTheConeWhileStuck) {
           EXPECT_LT(slip_from[k].norm(), kStuckSlipRelative * V0) << "stuck, contact " << k;
           // Past a stick break the slip grows from zero, so slip at the sample where the change is
           // recorded means the break was located late.
-          const bool breaks_here = modeAt(result.contact_changes, contacts[k], to.impulse_Ns) == ContactMode::Slip;
+          const bool breaks_here =
+              modeAt(result.contact_changes, contacts[k], to.impulse_Ns) == ContactMode::Slip;
           EXPECT_LT(slip_to[k].norm(), kStuckSlipRelative * V0)
               << (breaks_here ? "slip at the recorded stick break: located late, contact "
                               : "stuck, contact ")
@@ -531,17 +548,21 @@ TEST(CushionExactSolver, TraceRecordsCompressionEndAndTheRestitutionWorkRelation
     const std::vector<ImpactSample>& trace = result.trace;
     ASSERT_GE(trace.size(), static_cast<std::size_t>(kTraceSamplesPerImpact / 2));
     EXPECT_EQ(trace.front().impulse_Ns, 0.0);
-    EXPECT_LT(velocityDifference(trace.front().ball, impact.incoming, p.radius_m), kRoundoffRelative * V0);
+    EXPECT_LT(velocityDifference(trace.front().ball, impact.incoming, p.radius_m),
+              kRoundoffRelative * V0);
     EXPECT_EQ(trace.back().impulse_Ns, result.final_impulse_Ns);
-    EXPECT_LT(velocityDifference(trace.back().ball, result.after, p.radius_m), kRoundoffRelative * V0);
+    EXPECT_LT(velocityDifference(trace.back().ball, result.after, p.radius_m),
+              kRoundoffRelative * V0);
     // The sample at the end of compression.
-    const auto at_Pc = std::min_element(trace.begin(), trace.end(), [&](const ImpactSample& a, const ImpactSample& b) {
-      return std::abs(a.impulse_Ns - result.compression_impulse_Ns) <
-             std::abs(b.impulse_Ns - result.compression_impulse_Ns);
-    });
+    const auto at_Pc = std::min_element(
+        trace.begin(), trace.end(), [&](const ImpactSample& a, const ImpactSample& b) {
+          return std::abs(a.impulse_Ns - result.compression_impulse_Ns) <
+                 std::abs(b.impulse_Ns - result.compression_impulse_Ns);
+        });
     EXPECT_EQ(at_Pc->impulse_Ns, result.compression_impulse_Ns) << "an event sample at P_c";
     EXPECT_LT(std::abs(at_Pc->ball.v.y()), kSolverAccuracy * V0);
-    EXPECT_NEAR(at_Pc->normal_work_J, result.compression_work_J, kRoundoffRelative * result.compression_work_J);
+    EXPECT_NEAR(at_Pc->normal_work_J, result.compression_work_J,
+                kRoundoffRelative * result.compression_work_J);
     // Restitution released e^2 W_c.
     const double Wc = result.compression_work_J;
     EXPECT_NEAR(Wc - trace.back().normal_work_J, e * e * Wc, kSolverAccuracy * p.mass_kg * V0 * V0);
@@ -557,7 +578,8 @@ TEST(CushionExactSolver, TraceRecordsCompressionEndAndTheRestitutionWorkRelation
       ASSERT_NEAR(trace[n].normal_work_J, integral, kTraceIntegralRelative * Wc) << "sample " << n;
       // The recorded slips are those of the recorded state, to the solver's accuracy (it may snap
       // a slip that its event location left at the tolerance level to exactly zero).
-      EXPECT_LT((trace[n].cushion_slip - cushionSlip(p, trace[n].ball)).norm(), kSolverAccuracy * V0);
+      EXPECT_LT((trace[n].cushion_slip - cushionSlip(p, trace[n].ball)).norm(),
+                kSolverAccuracy * V0);
       EXPECT_LT((trace[n].cloth_slip - clothSlip(p, trace[n].ball)).norm(), kSolverAccuracy * V0);
       // Compression: v_y > 0 before P_c, < 0 after.
       if (trace[n].impulse_Ns < result.compression_impulse_Ns) {
@@ -612,14 +634,16 @@ TEST(CushionExactSolver, SameInputGivesBitIdenticalOutput) {
   }
 }
 
-// --- 7. the paper's qualitative claims -------------------------------------------------------------
+// --- 7. the paper's qualitative claims
+// -------------------------------------------------------------
 
 constexpr double kSpeed_mps = 1.0;  // Figs. 7 and 8 use V0 = 1 m/s
 
 BallVelocity rollingBall(const CushionParams& p, double alpha_deg, double sidespin_per_roll,
                          double topspin_per_roll = 1.0) {
   const double roll = kSpeed_mps / p.radius_m;
-  return incomingBall(kSpeed_mps, degrees(alpha_deg), topspin_per_roll * roll, sidespin_per_roll * roll);
+  return incomingBall(kSpeed_mps, degrees(alpha_deg), topspin_per_roll * roll,
+                      sidespin_per_roll * roll);
 }
 
 // Running english (positive sidespin for a ball moving in +x) lowers the cushion slip s_x, so the
@@ -634,7 +658,8 @@ TEST(CushionExactSolver, RunningEnglishCanMakeTheReboundFasterThanTheApproach) {
     const double none = test::reboundSpeed(solveExact(p, rollingBall(p, alpha_deg, 0)).after);
     const double running = test::reboundSpeed(solveExact(p, rollingBall(p, alpha_deg, 3)).after);
     EXPECT_LT(none, running) << "alpha " << alpha_deg;
-    EXPECT_LT(none, kSpeed_mps) << "without side the cushion only slows the ball, alpha " << alpha_deg;
+    EXPECT_LT(none, kSpeed_mps) << "without side the cushion only slows the ball, alpha "
+                                << alpha_deg;
     fastest = std::max(fastest, running / kSpeed_mps);
   }
   EXPECT_GT(fastest, 1.0) << "running english never returned the ball faster than it came";
@@ -667,7 +692,8 @@ TEST(CushionExactSolver, TopspinChangesTheReboundSpeedByUpToAboutFifteenPercent)
   const CushionParams p;
   double largest = 0;
   for (double alpha_deg = 5; alpha_deg <= 90; alpha_deg += 5) {
-    const double rolling = test::reboundSpeed(solveExact(p, rollingBall(p, alpha_deg, 0, 1.0)).after);
+    const double rolling =
+        test::reboundSpeed(solveExact(p, rollingBall(p, alpha_deg, 0, 1.0)).after);
     for (double k = 0; k <= 2; k += 0.25) {
       const double speed = test::reboundSpeed(solveExact(p, rollingBall(p, alpha_deg, 0, k)).after);
       largest = std::max(largest, std::abs(speed - rolling) / rolling);
@@ -690,7 +716,8 @@ TEST(CushionExactSolver, RollingReboundAngleDoesNotDependOnSpeed) {
   }
 }
 
-// --- 8. head-on rolling rebound and public data ---------------------------------------------------
+// --- 8. head-on rolling rebound and public data
+// ---------------------------------------------------
 
 // physics-notes section 1: the model with the paper's parameters gives about 0.91 for a rolling
 // head-on ball (0.818 is a straight-line fit that includes speeds where the rigid model fails).
@@ -713,9 +740,9 @@ TEST(CushionExactSolver, HeadOnRollingReboundRatioIsAboutPointNineOneAtEverySpee
 
 // Mathavan et al. 2009 (physics-notes section 6), head-on rolling snooker rebounds at speeds where
 // the rigid model applies (<= 1.5 m/s). Each value was read off a plot to +-0.03 m/s, and the
-// measurements themselves scatter by up to 0.03 m/s about their own fitted curve, so each point must
-// lie within 0.06 m/s of the model; the RMS difference, which the paper minimised to fit e_e, within
-// the reading uncertainty.
+// measurements themselves scatter by up to 0.03 m/s about their own fitted curve, so each point
+// must lie within 0.06 m/s of the model; the RMS difference, which the paper minimised to fit e_e,
+// within the reading uncertainty.
 constexpr double kDataPointTolerance_mps = 0.06;
 constexpr double kDataRmsTolerance_mps = 0.03;
 
@@ -732,16 +759,8 @@ TEST(CushionExactSolver, HeadOnRollingReboundMatchesMeasuredSnookerData) {
   EXPECT_LE(std::sqrt(sum_of_squares / std::size(measured)), kDataRmsTolerance_mps);
 }
 
-// --- 9. bad options -------------------------------------------------------------------------------
-
-void expectRejected(const std::function<void()>& call, const std::vector<std::string>& parts) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception; expected one naming " << ::testing::PrintToString(parts);
-  } catch (const std::invalid_argument& error) {
-    for (const std::string& part : parts) EXPECT_THAT(error.what(), HasSubstr(part));
-  }
-}
+// --- 9. bad options
+// -------------------------------------------------------------------------------
 
 TEST(CushionExactSolver, RejectsToleranceOutsideItsRangeAndBadTraceSpacing) {
   const CushionParams p;

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -17,11 +16,13 @@
 #include <vector>
 
 #include "tests/physics/cushion_test_support.h"
+#include "tests/physics/rejection_test_support.h"
 
 namespace baize::physics {
 namespace {
 
 using test::degrees;
+using test::expectRejected;
 using test::RandomImpacts;
 using ::testing::HasSubstr;
 
@@ -32,7 +33,8 @@ constexpr std::uint64_t kSeed = 0x5eed'c0ffee'0001ULL;
 constexpr int kRandomCases = 200;  // cheap closed-form checks: enough to cover every sign pattern
 
 Eigen::Vector3d randomVector(RandomImpacts& random, double scale) {
-  return {random.uniform(-scale, scale), random.uniform(-scale, scale), random.uniform(-scale, scale)};
+  return {random.uniform(-scale, scale), random.uniform(-scale, scale),
+          random.uniform(-scale, scale)};
 }
 
 // The tangent basis at the cushion contact I and the contact positions, written from the geometry:
@@ -200,7 +202,8 @@ TEST(CushionModel, ImpulseResponseGivesEquation14aAndItsPartnersForSlidingContac
                 -(g.c - mu_w * g.s * std::sin(phi) + mu_s * std::sin(phi_cloth) * q) / M, tol);
     EXPECT_EQ(rate.v.z(), 0.0);
     EXPECT_NEAR(rate.w.x(), -k * (mu_w * std::sin(phi) + mu_s * std::sin(phi_cloth) * q), tol);
-    EXPECT_NEAR(rate.w.y(), -k * (mu_w * std::cos(phi) * g.s - mu_s * std::cos(phi_cloth) * q), tol);
+    EXPECT_NEAR(rate.w.y(), -k * (mu_w * std::cos(phi) * g.s - mu_s * std::cos(phi_cloth) * q),
+                tol);
     EXPECT_NEAR(rate.w.z(), k * mu_w * std::cos(phi) * g.c, tol);
   }
 }
@@ -209,7 +212,9 @@ TEST(CushionModel, ImpulseResponseIsLinearInAllThreeImpulses) {
   RandomImpacts random(kSeed + 4);
   for (int i = 0; i < kRandomCases; ++i) {
     const CushionParams p = random.randomParams();
-    auto draw = [&] { return Eigen::Vector2d(random.uniform(-0.2, 0.2), random.uniform(-0.2, 0.2)); };
+    auto draw = [&] {
+      return Eigen::Vector2d(random.uniform(-0.2, 0.2), random.uniform(-0.2, 0.2));
+    };
     const double P1 = random.uniform(0, 0.5), P2 = random.uniform(0, 0.5);
     const Eigen::Vector2d a1 = draw(), a2 = draw(), b1 = draw(), b2 = draw();
     const double lambda = random.uniform(-3, 3), mu = random.uniform(-3, 3);
@@ -222,7 +227,8 @@ TEST(CushionModel, ImpulseResponseIsLinearInAllThreeImpulses) {
     expected.w = lambda * one.w + mu * two.w;
     EXPECT_LT(test::velocityDifference(combined, expected, p.radius_m),
               kRoundoffRelative * 10 / p.mass_kg);
-    const BallVelocity nothing = impulseResponse(p, 0, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero());
+    const BallVelocity nothing =
+        impulseResponse(p, 0, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero());
     EXPECT_EQ(nothing.v.norm() + nothing.w.norm(), 0.0);
   }
 }
@@ -232,13 +238,14 @@ TEST(CushionModel, KineticEnergyIsTranslationPlusRotationOfASolidSphere) {
   p.mass_kg = 0.25;
   p.radius_m = 0.5;
   BallVelocity ball;
-  ball.v = {1, 2, 2};   // |v|^2 = 9
-  ball.w = {0, 3, 4};   // |w|^2 = 25, I = 2/5 * 0.25 * 0.25 = 0.025 kg m^2
+  ball.v = {1, 2, 2};  // |v|^2 = 9
+  ball.w = {0, 3, 4};  // |w|^2 = 25, I = 2/5 * 0.25 * 0.25 = 0.025 kg m^2
   EXPECT_NEAR(kineticEnergy(p, ball), 0.5 * 0.25 * 9 + 0.5 * 0.025 * 25, kRoundoffRelative);
   // Natural roll carries 7/5 of the translational energy.
   const CushionParams snooker;
   const BallVelocity rolling = incomingBall(2.0, degrees(30), 2.0 / snooker.radius_m, 0);
-  EXPECT_NEAR(kineticEnergy(snooker, rolling), 1.4 * 0.5 * snooker.mass_kg * 4.0, kRoundoffRelative);
+  EXPECT_NEAR(kineticEnergy(snooker, rolling), 1.4 * 0.5 * snooker.mass_kg * 4.0,
+              kRoundoffRelative);
 }
 
 // The guard the random-impact tests put around physics calls must really trap, and only while it
@@ -265,16 +272,6 @@ TEST(FloatingPointTrapsDeathTest, DivisionByZeroCrashesOnlyInsideTheGuard) {
 }
 
 // --- validation -------------------------------------------------------------------------------
-
-// Runs `call`, which must throw std::invalid_argument whose message holds every one of `parts`.
-void expectRejected(const std::function<void()>& call, const std::vector<std::string>& parts) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception; expected one naming " << ::testing::PrintToString(parts);
-  } catch (const std::invalid_argument& error) {
-    for (const std::string& part : parts) EXPECT_THAT(error.what(), HasSubstr(part));
-  }
-}
 
 // A radius that is exact in binary (1/32 m), so the limits R and 2R print exactly.
 CushionParams exactParams() {

@@ -16,11 +16,13 @@
 
 #include "physics/cushion_exact_solver.h"
 #include "tests/physics/cushion_test_support.h"
+#include "tests/physics/rejection_test_support.h"
 
 namespace baize::physics {
 namespace {
 
 using test::degrees;
+using test::expectRejected;
 using test::FloatingPointTraps;
 using test::RandomImpacts;
 using test::velocityDifference;
@@ -94,13 +96,15 @@ TEST(CushionPaperSolver, FrictionlessLimitIsExactUpToOneStepOfTheStopRules) {
       EXPECT_LT(result.compression_impulse_Ns, exact_Pc + dP * (1 + kRoundoffRelative));
       const double exact_Wc = M * vy0 * vy0 / 2;
       EXPECT_LE(result.compression_work_J, exact_Wc * (1 + kRoundoffRelative));
-      EXPECT_GT(result.compression_work_J, exact_Wc - M * dv * dv / 2 - exact_Wc * kRoundoffRelative);
+      EXPECT_GT(result.compression_work_J,
+                exact_Wc - M * dv * dv / 2 - exact_Wc * kRoundoffRelative);
       EXPECT_GT(result.final_impulse_Ns, result.compression_impulse_Ns);
     }
   }
 }
 
-// --- 2. energy -------------------------------------------------------------------------------------
+// --- 2. energy
+// -------------------------------------------------------------------------------------
 
 // The normal force at I does net work -(1 - e^2) W_c, friction only dissipates and the table's
 // normal force does no work (its contact point has no vertical velocity), so exactly
@@ -123,7 +127,8 @@ TEST(CushionPaperSolver, KineticEnergyNeverGrowsBeyondTheSchemesFirstOrderError)
   }
 }
 
-// --- 3. mirror symmetry ----------------------------------------------------------------------------
+// --- 3. mirror symmetry
+// ----------------------------------------------------------------------------
 
 // The reflection x -> -x maps a solution onto a solution: v -> (-vx, vy, vz), w -> (wx, -wy, -wz).
 // For the incoming ball that is alpha -> pi - alpha with the sidespin reversed. Every operation of
@@ -151,7 +156,8 @@ TEST(CushionPaperSolver, MirroredIncomingBallGivesTheMirroredOutcome) {
   }
 }
 
-// --- 4. linear scaling -----------------------------------------------------------------------------
+// --- 4. linear scaling
+// -----------------------------------------------------------------------------
 
 // The rates depend only on the slip directions, which do not change when every velocity is scaled
 // by lambda; dP scales by lambda, so the whole run scales. With lambda a power of two the scaled
@@ -176,12 +182,14 @@ TEST(CushionPaperSolver, ScalingSpeedAndSpinsScalesTheOutcome) {
                   kRoundoffRelative * lambda * base.final_impulse_Ns);
       EXPECT_NEAR(scaled.compression_work_J, lambda * lambda * base.compression_work_J,
                   kRoundoffRelative * lambda * lambda * base.compression_work_J);
-      EXPECT_NEAR(test::reboundAngle(scaled.after), test::reboundAngle(base.after), kRoundoffRelative);
+      EXPECT_NEAR(test::reboundAngle(scaled.after), test::reboundAngle(base.after),
+                  kRoundoffRelative);
     }
   }
 }
 
-// --- the Coulomb law in every increment ------------------------------------------------------------
+// --- the Coulomb law in every increment
+// ------------------------------------------------------------
 
 // From two consecutive states, the friction impulses per unit normal impulse that produced the
 // change: a at I (basis x, Y') and b at C (basis x, y), inverted from the impulse response (the
@@ -200,7 +208,7 @@ RecoveredFriction recoverFriction(const CushionParams& p, const BallVelocity& be
   RecoveredFriction out;
   const double a_x = dw.z() / (k * c);
   const double b_x = -M * dv.x() - a_x;
-  const double sum_y = -dw.x() / k;            // a_y + b_y
+  const double sum_y = -dw.x() / k;             // a_y + b_y
   const double difference_y = -M * dv.y() - c;  // -s a_y + b_y
   const double a_y = (sum_y - difference_y) / (1 + s);
   out.cushion = {a_x, a_y};
@@ -226,11 +234,12 @@ TEST(CushionPaperSolver, EveryIncrementAppliesCoulombFrictionAlongTheSlipAtItsSt
       const ImpactSample& from = result.trace[n];
       const ImpactSample& to = result.trace[n + 1];
       ASSERT_NEAR(to.impulse_Ns - from.impulse_Ns, dP, kRoundoffRelative * result.final_impulse_Ns);
-      const RecoveredFriction f = recoverFriction(p, from.ball, to.ball, to.impulse_Ns - from.impulse_Ns);
+      const RecoveredFriction f =
+          recoverFriction(p, from.ball, to.ball, to.impulse_Ns - from.impulse_Ns);
       const double tol = kRecoveredFrictionRelative;
-      const Eigen::Vector2d cushion_dir =
-          from.cushion_slip.norm() > 0 ? Eigen::Vector2d(from.cushion_slip.normalized())
-                                       : Eigen::Vector2d::Zero();
+      const Eigen::Vector2d cushion_dir = from.cushion_slip.norm() > 0
+                                              ? Eigen::Vector2d(from.cushion_slip.normalized())
+                                              : Eigen::Vector2d::Zero();
       const Eigen::Vector2d cloth_dir = from.cloth_slip.norm() > 0
                                             ? Eigen::Vector2d(from.cloth_slip.normalized())
                                             : Eigen::Vector2d::Zero();
@@ -256,13 +265,14 @@ TEST(CushionPaperSolver, EveryIncrementAppliesCoulombFrictionAlongTheSlipAtItsSt
 // 1/N, and the stop rules, which end compression and restitution at the first step past their
 // targets, an overshoot uniform in [0, dP) that depends on where the target falls inside a step.
 // The second part makes error(N) for one N wobble by up to a factor of ten (measured), so the test
-// takes the worst error over kPhaseSamples consecutive N, which samples that phase; that worst error
-// times N is then nearly constant (measured spread below 1.3).
+// takes the worst error over kPhaseSamples consecutive N, which samples that phase; that worst
+// error times N is then nearly constant (measured spread below 1.3).
 constexpr int kPhaseSamples = 8;
 // First order: worst-error * N may vary by at most this factor over N = 1000 ... 16000 (a second-
 // order scheme would vary by 16, a zeroth-order one by 1/16).
 constexpr double kFirstOrderSpread = 2.0;
-// Over the 16-fold range of N the worst error must fall by a factor in [8, 32] (16 for first order).
+// Over the 16-fold range of N the worst error must fall by a factor in [8, 32] (16 for first
+// order).
 constexpr double kSixteenfoldReductionLow = 8.0;
 constexpr double kSixteenfoldReductionHigh = 32.0;
 // The error constant itself (units of V0): the stop-rule overshoot alone reaches about
@@ -282,9 +292,9 @@ TEST(CushionPaperSolver, ConvergesToTheExactSolverAtFirstOrder) {
   for (const ConvergenceCase& example : cases) {
     SCOPED_TRACE(example.name);
     const double V0 = example.speed_mps, R = p.radius_m;
-    const BallVelocity in = incomingBall(V0, degrees(example.alpha_deg),
-                                         example.topspin_per_roll * V0 / R,
-                                         example.sidespin_per_roll * V0 / R);
+    const BallVelocity in =
+        incomingBall(V0, degrees(example.alpha_deg), example.topspin_per_roll * V0 / R,
+                     example.sidespin_per_roll * V0 / R);
     ExactSolverOptions converged;
     converged.tolerance = 1e-14;
     const BallVelocity reference = solveCushionImpactExact(p, in, converged).after;
@@ -306,11 +316,11 @@ TEST(CushionPaperSolver, ConvergesToTheExactSolverAtFirstOrder) {
 }
 
 // With the stop rules located by interpolation (test::paperSchemeWithLocatedStops) only the Euler
-// error of the trajectory is left, which is C / N + O(1/N^2) while the slip directions turn smoothly:
-// halving the step halves the error. (Not for the rolling head-on case: there the cushion slip
-// passes through zero and reverses, and the increment in which friction flips is again a
+// error of the trajectory is left, which is C / N + O(1/N^2) while the slip directions turn
+// smoothly: halving the step halves the error. (Not for the rolling head-on case: there the cushion
+// slip passes through zero and reverses, and the increment in which friction flips is again a
 // phase-dependent first-order error.)
-constexpr double kHalvingRatioLow = 1.9;   // error(N) / error(2N) for a first-order method: 2
+constexpr double kHalvingRatioLow = 1.9;  // error(N) / error(2N) for a first-order method: 2
 constexpr double kHalvingRatioHigh = 2.1;
 
 TEST(CushionPaperSolver, EulerTrajectoryWithLocatedStopsHalvesItsErrorWithItsStep) {
@@ -320,9 +330,9 @@ TEST(CushionPaperSolver, EulerTrajectoryWithLocatedStopsHalvesItsErrorWithItsSte
   for (const ConvergenceCase& example : cases) {
     SCOPED_TRACE(example.name);
     const double V0 = example.speed_mps, R = p.radius_m;
-    const BallVelocity in = incomingBall(V0, degrees(example.alpha_deg),
-                                         example.topspin_per_roll * V0 / R,
-                                         example.sidespin_per_roll * V0 / R);
+    const BallVelocity in =
+        incomingBall(V0, degrees(example.alpha_deg), example.topspin_per_roll * V0 / R,
+                     example.sidespin_per_roll * V0 / R);
     ExactSolverOptions converged;
     converged.tolerance = 1e-14;
     const BallVelocity reference = solveCushionImpactExact(p, in, converged).after;
@@ -343,7 +353,8 @@ TEST(CushionPaperSolver, EulerTrajectoryWithLocatedStopsHalvesItsErrorWithItsSte
   }
 }
 
-// --- 8. the publication's head-on rolling rebound -------------------------------------------------
+// --- 8. the publication's head-on rolling rebound
+// -------------------------------------------------
 
 // The seed's setting N = 5000 reproduces the model's head-on rolling ratio of about 0.91
 // (physics-notes section 1: 0.818 is a fit over speeds where the rigid model fails).
@@ -353,15 +364,18 @@ constexpr double kHeadOnRatioHigh = 0.93;
 TEST(CushionPaperSolver, PublicationSettingGivesTheHeadOnRollingRatio) {
   const CushionParams p;
   for (double V0 : {0.5, 1.0, 2.0}) {
-    const CushionImpactResult result = solvePaper(p, incomingBall(V0, degrees(90), V0 / p.radius_m, 0), 5000);
+    const CushionImpactResult result =
+        solvePaper(p, incomingBall(V0, degrees(90), V0 / p.radius_m, 0), 5000);
     const double ratio = test::reboundSpeed(result.after) / V0;
     EXPECT_GE(ratio, kHeadOnRatioLow) << "V0 " << V0;
     EXPECT_LE(ratio, kHeadOnRatioHigh) << "V0 " << V0;
-    EXPECT_NEAR(result.after.v.x(), 0.0, kRoundoffRelative * V0) << "head-on without side stays head-on";
+    EXPECT_NEAR(result.after.v.x(), 0.0, kRoundoffRelative * V0)
+        << "head-on without side stays head-on";
   }
 }
 
-// --- determinism and options ----------------------------------------------------------------------
+// --- determinism and options
+// ----------------------------------------------------------------------
 
 TEST(CushionPaperSolver, SameInputGivesBitIdenticalOutput) {
   RandomImpacts random(kSeed + 5);
@@ -390,23 +404,15 @@ TEST(CushionPaperSolver, TraceIsOnlyRecordedWhenAsked) {
   EXPECT_EQ(traced.trace.size(), static_cast<std::size_t>(traced.rhs_evaluations) + 1);
   // W_c is the recorded work at the first increment that ends with v_y <= 0, and the run stops at
   // the first increment whose work is down to (1 - e^2) W_c.
-  const auto crossing = std::find_if(traced.trace.begin(), traced.trace.end(),
-                                     [](const ImpactSample& sample) { return sample.ball.v.y() <= 0; });
+  const auto crossing =
+      std::find_if(traced.trace.begin(), traced.trace.end(),
+                   [](const ImpactSample& sample) { return sample.ball.v.y() <= 0; });
   ASSERT_NE(crossing, traced.trace.end());
   EXPECT_EQ(crossing->impulse_Ns, traced.compression_impulse_Ns);
   EXPECT_EQ(crossing->normal_work_J, traced.compression_work_J);
   const double target = (1 - p.restitution * p.restitution) * traced.compression_work_J;
   EXPECT_LE(traced.trace.back().normal_work_J, target);
   EXPECT_GT(traced.trace[traced.trace.size() - 2].normal_work_J, target);
-}
-
-void expectRejected(const std::function<void()>& call, const std::vector<std::string>& parts) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception; expected one naming " << ::testing::PrintToString(parts);
-  } catch (const std::invalid_argument& error) {
-    for (const std::string& part : parts) EXPECT_THAT(error.what(), HasSubstr(part));
-  }
 }
 
 TEST(CushionPaperSolver, RejectsBadStepsParametersAndIncomingBalls) {

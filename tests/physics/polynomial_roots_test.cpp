@@ -11,9 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "tests/physics/rejection_test_support.h"
+
 namespace baize::physics {
 namespace {
 
+using test::expectRejected;
 using Coefficients = PolynomialCoefficients;
 
 constexpr double kUnitRoundoff = 0x1p-53;
@@ -403,15 +406,6 @@ TEST(PolynomialRootsTest, ZeroPolynomial) {
   EXPECT_EQ(firstClosingRoot(zero, 2, 3).time, 2);
   EXPECT_THROW(realRoots(zero), std::invalid_argument);
   EXPECT_THROW(rootsInInterval(zero, 0, 1), std::invalid_argument);
-}
-
-void expectRejected(const std::function<void()>& call, const std::string& needle) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception; expected one mentioning " << needle;
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
 }
 
 TEST(PolynomialRootsTest, BadInputIsRejected) {
