@@ -1,4 +1,4 @@
-// Error messages that name a bad value: the value printed so that it reads back exactly.
+// Text for a double that reads back exactly: error messages naming a bad value, CSV output.
 #pragma once
 
 #include <cmath>
@@ -6,7 +6,8 @@
 
 namespace baize::physics {
 
-// `value` with 17 significant digits ("nan", "inf" as such).
+// `value` with 17 significant digits, so that reading the text back gives the same double bit for
+// bit ("nan", "inf" as such); also the number format of the tools' CSV output.
 std::string valueText(double value);
 
 // Throws std::invalid_argument("<what> = <value> is not allowed: <allowed>").

@@ -8,10 +8,10 @@
 #include <sstream>
 #include <string>
 
+#include "physics/value_text.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_bench.h"
-#include "tools/baize/number_format.h"
 
 namespace baize::tools {
 namespace {
@@ -29,7 +29,7 @@ struct BenchFlags {
 std::string csvRow(const BenchRow& row) {
   std::ostringstream out;
   out << solverName(row.setting.kind) << ',' << settingLabel(row.setting) << ',' << std::fixed
-      << std::setprecision(1) << row.median_ns << ',' << fullPrecision(row.max_error);
+      << std::setprecision(1) << row.median_ns << ',' << physics::valueText(row.max_error);
   return out.str();
 }
 

@@ -4,12 +4,12 @@
 #include <exception>
 #include <iostream>
 
-#include "tools/baize/number_format.h"
+#include "physics/value_text.h"
 
 namespace baize::tools {
 
 void rejectFlag(const std::string& flag, double value, const std::string& allowed) {
-  throw UsageError(flag + " = " + fullPrecision(value) + " is not allowed: " + allowed);
+  throw UsageError(flag + " = " + physics::valueText(value) + " is not allowed: " + allowed);
 }
 
 void requireFiniteFlag(const std::string& flag, double value) {

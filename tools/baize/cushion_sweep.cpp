@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "physics/value_text.h"
 #include "tools/baize/atomic_file.h"
-#include "tools/baize/number_format.h"
 
 namespace baize::tools {
 namespace {
@@ -50,10 +50,10 @@ void writeReboundFamily(AtomicFile& file, const CurveFamily& family,
       shot.angle_deg = kFirstAngleDeg + i * kAngleStepDeg;
       const physics::BallVelocity incoming = incomingBallOf(shot, params.radius_m);
       const Rebound rebound = reboundOf(solveCushionShot(params, incoming, setting).after);
-      out << fullPrecision(shot.speed_mps) << ',' << fullPrecision(shot.topspin_k) << ','
-          << fullPrecision(shot.sidespin_k) << ',' << fullPrecision(shot.angle_deg) << ','
-          << fullPrecision(rebound.speed_mps) << ',' << fullPrecision(rebound.angle_deg) << ','
-          << fullPrecision(rebound.speed_mps / shot.speed_mps) << '\n';
+      out << physics::valueText(shot.speed_mps) << ',' << physics::valueText(shot.topspin_k) << ','
+          << physics::valueText(shot.sidespin_k) << ',' << physics::valueText(shot.angle_deg) << ','
+          << physics::valueText(rebound.speed_mps) << ',' << physics::valueText(rebound.angle_deg)
+          << ',' << physics::valueText(rebound.speed_mps / shot.speed_mps) << '\n';
     }
   }
 }
@@ -75,10 +75,10 @@ void writeSlipCurves(AtomicFile& file, const physics::CushionParams& params,
   for (const physics::ImpactSample& sample : result.trace) {
     const Eigen::Vector2d& s = sample.cushion_slip;
     const Eigen::Vector2d& c = sample.cloth_slip;
-    out << fullPrecision(sample.impulse_Ns) << ',' << fullPrecision(s.norm()) << ','
-        << fullPrecision(std::atan2(s.y(), s.x()) * kDegreesPerRadian) << ','
-        << fullPrecision(c.norm()) << ','
-        << fullPrecision(std::atan2(c.y(), c.x()) * kDegreesPerRadian) << '\n';
+    out << physics::valueText(sample.impulse_Ns) << ',' << physics::valueText(s.norm()) << ','
+        << physics::valueText(std::atan2(s.y(), s.x()) * kDegreesPerRadian) << ','
+        << physics::valueText(c.norm()) << ','
+        << physics::valueText(std::atan2(c.y(), c.x()) * kDegreesPerRadian) << '\n';
   }
 }
 
