@@ -405,7 +405,7 @@ class ExactImpact {
   // which the slip grows along itself, the one where it grows fastest.
   Eigen::Vector2d creepDirectionSearch(int k, Laws laws) const {
     laws.stick[k] = false;
-    Eigen::Vector2d solved;
+    Eigen::Vector2d solved = Eigen::Vector2d::Zero();  // set whenever the affine solve succeeds
     if (creepDirectionAffine(k, laws, &solved)) return solved;
     auto rateAlong = [&](double phi) {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
