@@ -19,6 +19,18 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Balls may start this much closer than touching (m) and still count as touching: positions written
 // in a scene file or placed by a rack round to about this.
 constexpr double kContactSlack_m = 1e-9;
+// Sustained contact: a ball pressed into another ball or a cushion by cloth friction (spin driving
+// it on, or the ball ahead slowing faster) makes a Zeno sequence of ever smaller bounces that the
+// cloth damps out, ending in a contact that lasts. The event loop keeps such a contact as a steady
+// train of small bounces instead: a pressed contact leaves at this separation speed at least, m/s,
+// the energy for it taken from the balls' spin (the source that presses them). The impulses then
+// average to the pressing force of the lasting contact, the relative speed ripples by at most this
+// much and the gap by this^2 / (2 a) (0.25 um at a = 2 m/s^2), and a push of a second costs about
+// a thousand events. Invisible at table scale, well above rounding.
+constexpr double kSustainedContactSpeed_mps = 1e-3;
+// Fraction of the energy budget left unspent by that release, so that rounding in the energy sums
+// cannot make the balls' energy grow.
+constexpr double kEnergyBudgetMargin = 1e-9;
 
 struct Candidate {
   double dt_s = kInfinity;  // from now
@@ -94,6 +106,47 @@ bool onArc(const JawArc& jaw, const Eigen::Vector2d& q) {
   double angle = std::atan2(q.y() - jaw.centre_m.y(), q.x() - jaw.centre_m.x());
   while (angle < jaw.start_angle_rad) angle += 2 * M_PI;
   return angle <= jaw.end_angle_rad;
+}
+
+// Raises the separation speed of a pressed contact towards kSustainedContactSpeed_mps (see there)
+// by a normal impulse, paying the energy it adds out of the balls' spin and out of what the impact
+// itself dissipated (`energy_before_J` is the balls' kinetic energy before it): as far as that
+// budget reaches, so energy never grows. `normal` points from `first` to `second`; `second` is null
+// for a cushion (infinite mass; the normal then points away from it, into the table).
+void releasePressedContact(const physics::CushionParams& ball, double energy_before_J,
+                           const Eigen::Vector3d& normal, physics::BallVelocity* first,
+                           physics::BallVelocity* second) {
+  const double separation = second ? (second->v - first->v).dot(normal) : first->v.dot(normal);
+  if (separation >= kSustainedContactSpeed_mps) return;
+  auto spinEnergy = [&](const physics::BallVelocity& b) {
+    return physics::kineticEnergy(ball, {Eigen::Vector3d::Zero(), b.w});
+  };
+  const double energy =
+      physics::kineticEnergy(ball, *first) + (second ? physics::kineticEnergy(ball, *second) : 0);
+  const double spin = spinEnergy(*first) + (second ? spinEnergy(*second) : 0);
+  // Spin paid out is spin * (1 - scale^2); keep a rounding margin so energy cannot grow.
+  const double budget = (spin + energy_before_J - energy) * (1 - kEnergyBudgetMargin);
+  if (!(budget > 0)) return;
+  // The kinetic energy the boost b adds: m/4 (2 b s + b^2) for two balls of mass m (each takes
+  // half), m/2 (2 b s + b^2) for one ball off a cushion; the largest b within budget solves the
+  // quadratic.
+  const double effective_mass = second ? ball.mass_kg / 2 : ball.mass_kg;
+  const double affordable =
+      -separation + std::sqrt(separation * separation + 2 * budget / effective_mass);
+  const double boost = std::min(kSustainedContactSpeed_mps - separation, affordable);
+  if (!(boost > 0)) return;
+  if (second) {
+    first->v -= 0.5 * boost * normal;
+    second->v += 0.5 * boost * normal;
+  } else {
+    first->v += boost * normal;
+  }
+  const double excess = physics::kineticEnergy(ball, *first) +
+                        (second ? physics::kineticEnergy(ball, *second) : 0) - energy_before_J;
+  if (excess <= 0) return;
+  const double scale = std::sqrt(std::max(0.0, 1 - excess / spin));
+  first->w *= scale;
+  if (second) second->w *= scale;
 }
 
 void validateInput(const SimulationParams& p, const TableGeometry& table,
@@ -411,9 +464,16 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
                 : Eigen::Vector2d((a.position - table.jaws[best.index].centre_m).normalized());
         const CushionFrame frame(normal);
         const physics::BallVelocity local = frame.toLocal(a);
-        if (local.v.y() > 0) {
-          frame.toTable(physics::solveCushionImpactExact(p.cushion, local, p.cushion_solver).after,
-                        &a);
+        const bool pressed = path[best.ball].quadratic_mps2.dot(normal) < 0;
+        if (local.v.y() > 0 || pressed) {
+          physics::BallVelocity after = local;
+          if (local.v.y() > 0)
+            after = physics::solveCushionImpactExact(p.cushion, local, p.cushion_solver).after;
+          // In the cushion's frame the normal into the table is -y.
+          if (pressed)
+            releasePressedContact(p.cushion, physics::kineticEnergy(p.cushion, local),
+                                  Eigen::Vector3d(0, -1, 0), &after, nullptr);
+          frame.toTable(after, &a);
         }
         break;
       }
@@ -423,13 +483,27 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         normal.normalize();
         const physics::BallVelocity va{a.velocity, a.angular_velocity},
             vb{b.velocity, b.angular_velocity};
-        if (physics::approachSpeed(va, vb, normal) > 0) {
-          const physics::BallBallImpactResult impact =
-              physics::resolveBallBallImpact(p.ball_ball, va, vb, normal);
-          a.velocity = impact.ball1.v;
-          a.angular_velocity = impact.ball1.w;
-          b.velocity = impact.ball2.v;
-          b.angular_velocity = impact.ball2.w;
+        const bool approaching = physics::approachSpeed(va, vb, normal) > 0;
+        const bool pressed = (path[best.ball].quadratic_mps2 - path[best.other].quadratic_mps2)
+                                 .dot(normal.head<2>()) > 0;
+        if (approaching || pressed) {
+          physics::BallVelocity a_after = va, b_after = vb;
+          if (approaching) {
+            const physics::BallBallImpactResult impact =
+                physics::resolveBallBallImpact(p.ball_ball, va, vb, normal);
+            a_after = impact.ball1;
+            b_after = impact.ball2;
+          }
+          if (pressed) {
+            releasePressedContact(
+                p.cushion,
+                physics::kineticEnergy(p.cushion, va) + physics::kineticEnergy(p.cushion, vb),
+                normal, &a_after, &b_after);
+          }
+          a.velocity = a_after.v;
+          a.angular_velocity = a_after.w;
+          b.velocity = b_after.v;
+          b.angular_velocity = b_after.w;
         }
         break;
       }

@@ -251,6 +251,13 @@ RootList collectRoots(const Polynomial& p, double a, double b, Mode mode) {
         return roots;
       }
     }
+    if (mode == Mode::FirstClosingRoot && j > 0 && end.sign < 0 && j + 1 < count &&
+        ends[j + 1].value < end.value) {
+      // Still overlapping where an opening gap turns back to closing (it started overlapping and
+      // never opened past zero): touching and approaching from here on.
+      roots.add(end.t);
+      return roots;
+    }
     if (j + 1 < count) {
       const Sample& next = ends[j + 1];
       // p crosses zero inside the piece when the next end has the other sign, or lies within the

@@ -83,10 +83,11 @@ RootSearchResult smallestRootInInterval(const PolynomialCoefficients& coefficien
 // contact distance, a signed distance to a line): the first time in [t_lo, t_hi] at which the gap
 // closes. That is the smallest root at which p is not rising: p falls through zero, p touches zero
 // (a double root, grazing contact), or p starts at or below zero (within rounding) and does not
-// rise from there (touching or overlapping and approaching: an event now). Roots where p rises
-// through zero (separation), and a start at zero followed by a rise (touching and separating) are
-// skipped, so an engine that resolved a contact at t_lo does not find it again. Same input rules as
-// above.
+// rise from there (touching or overlapping and approaching: an event now), or p starts below zero,
+// rises without reaching it and turns back (a contact that never separated starts closing again:
+// an event where it turns). Roots where p rises through zero (separation), and a start at zero
+// followed by a rise (touching and separating) are skipped, so an engine that resolved a contact at
+// t_lo does not find it again. Same input rules as above.
 RootSearchResult firstClosingRoot(const PolynomialCoefficients& coefficients, double t_lo,
                                   double t_hi);
 

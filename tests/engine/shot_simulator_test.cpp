@@ -1,14 +1,14 @@
 #include "engine/shot_simulator.h"
 
-#include "engine/ball_set.h"
-#include "engine/rack.h"
-#include "engine/table.h"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+
+#include "engine/ball_set.h"
+#include "engine/rack.h"
+#include "engine/table.h"
 
 namespace baize::engine {
 namespace {
@@ -20,7 +20,8 @@ using ::testing::HasSubstr;
 constexpr double kClosedFormRelative = 1e-12;
 // The exact cushion solver's accuracy at its default tolerance, relative to the speed.
 constexpr double kCushionAccuracy = 1e-9;
-// Positions of touching balls and of balls at a cushion are located by polynomial roots: to rounding.
+// Positions of touching balls and of balls at a cushion are located by polynomial roots: to
+// rounding.
 constexpr double kContactTolerance_m = 1e-9;
 
 BallState ballAt(double x, double y, double vx = 0, double vy = 0) {
@@ -64,14 +65,15 @@ TEST(ShotSimulator, StunShotSlidesRollsAndStopsWhereTheClosedFormSays) {
   const double sliding = 12 * v0 * v0 / (49 * p.cloth.sliding_friction * g);
   EXPECT_NEAR(r.events[0].after[0].position.x(), -5 + sliding, kClosedFormRelative * 10);
   const double v1 = 5.0 / 7 * v0, rolling = v1 * v1 / (2 * p.cloth.rolling_friction * g);
-  EXPECT_NEAR(r.final_balls[0].state.position.x(), -5 + sliding + rolling, kClosedFormRelative * 10);
+  EXPECT_NEAR(r.final_balls[0].state.position.x(), -5 + sliding + rolling,
+              kClosedFormRelative * 10);
   EXPECT_NEAR(r.final_balls[0].state.position.y(), 0, kClosedFormRelative);
   EXPECT_EQ(r.final_balls[0].state.velocity.norm(), 0);
 }
 
-// A rolling ball meeting a cushion head-on gets exactly what the seed model gives, in that cushion's
-// frame: for the right-hand cushion (inward normal -x) local y is +x and local x is -y, so
-// v_table = (v_y', -v_x') and w_table = (w_y', -w_x', w_z').
+// A rolling ball meeting a cushion head-on gets exactly what the seed model gives, in that
+// cushion's frame: for the right-hand cushion (inward normal -x) local y is +x and local x is -y,
+// so v_table = (v_y', -v_x') and w_table = (w_y', -w_x', w_z').
 TEST(ShotSimulator, HeadOnCushionHitEqualsTheCushionModelCalledDirectly) {
   const SimulationParams p = poolSimulationParams();
   const double R = p.cushion.radius_m;
@@ -103,11 +105,13 @@ TEST(ShotSimulator, HeadOnBallHitHappensAtTouchingDistanceAndExchangesVelocities
   p.ball_ball.friction_law = physics::BallBallFrictionLaw::Constant;
   p.ball_ball.constant_friction = 0;
   const double R = p.cushion.radius_m;
-  const SimulationResult r = simulate(p, rectangularTable(20, 10), {ballAt(-2, 0, 2, 0), ballAt(0, 0)});
+  const SimulationResult r =
+      simulate(p, rectangularTable(20, 10), {ballAt(-2, 0, 2, 0), ballAt(0, 0)});
   const auto hit = std::find_if(r.events.begin(), r.events.end(),
                                 [](const Event& e) { return e.kind == EventKind::BallBall; });
   ASSERT_NE(hit, r.events.end());
-  EXPECT_NEAR((hit->before[0].position - hit->before[1].position).norm(), 2 * R, kContactTolerance_m);
+  EXPECT_NEAR((hit->before[0].position - hit->before[1].position).norm(), 2 * R,
+              kContactTolerance_m);
   EXPECT_NEAR(hit->after[0].velocity.x(), 0, 1e-12);
   EXPECT_NEAR(hit->after[1].velocity.x(), hit->before[0].velocity.x(), 1e-12);
 }
@@ -119,7 +123,9 @@ TEST(ShotSimulator, RandomScenesKeepEnergyFallingAndBallsApartAndOnTheTable) {
   const double R = p.cushion.radius_m, L = 2.54, W = 1.27;
   const TableGeometry table = rectangularTable(L, W);
   std::mt19937_64 engine(20261121);
-  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53); };
+  auto uniform = [&](double lo, double hi) {
+    return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53);
+  };
   int collisions = 0, cushion_hits = 0;
   for (int scene = 0; scene < 60; ++scene) {
     const int n = 2 + scene % 3;
@@ -179,7 +185,8 @@ TEST(ShotSimulator, SameInputGivesBitIdenticalOutput) {
   const std::vector<BallState> scene = {cue, ballAt(0.3, 0), ballAt(0.3 + 0.0572, 0.0)};
   const SimulationResult a = simulate(p, table, scene), b = simulate(p, table, scene);
   ASSERT_EQ(a.events.size(), b.events.size());
-  for (std::size_t i = 0; i < a.events.size(); ++i) EXPECT_EQ(a.events[i].time_s, b.events[i].time_s);
+  for (std::size_t i = 0; i < a.events.size(); ++i)
+    EXPECT_EQ(a.events[i].time_s, b.events[i].time_s);
   for (std::size_t i = 0; i < scene.size(); ++i) {
     EXPECT_EQ(a.final_balls[i].state.position, b.final_balls[i].state.position);
   }
@@ -206,14 +213,15 @@ TEST(ShotSimulator, PairsOfRestingBallsAreSkipped) {
   EXPECT_GE(r.skipped_predictions, 45) << "the 45 resting pairs, at every event";
 }
 
-// The recorded pieces reproduce every event's state: sampled at an event's time, the trajectory of an
-// involved ball gives its state just after the event (the closed form from the piece's start).
+// The recorded pieces reproduce every event's state: sampled at an event's time, the trajectory of
+// an involved ball gives its state just after the event (the closed form from the piece's start).
 TEST(ShotSimulator, TrajectoriesSampledAtEventsGiveTheEventStates) {
   SimulationParams p = poolSimulationParams();
   p.record_trajectories = true;
   BallState cue = ballAt(-0.9, -0.2, 3, 1);
   cue.angular_velocity = {10, -40, 30};
-  const SimulationResult r = simulate(p, rectangularTable(2.54, 1.27), {cue, ballAt(0.3, 0), ballAt(0.5, 0.3)});
+  const SimulationResult r =
+      simulate(p, rectangularTable(2.54, 1.27), {cue, ballAt(0.3, 0), ballAt(0.5, 0.3)});
   ASSERT_EQ(r.trajectories.size(), 3u);
   int checked = 0;
   for (const Event& e : r.events) {
@@ -227,7 +235,8 @@ TEST(ShotSimulator, TrajectoriesSampledAtEventsGiveTheEventStates) {
     const BallState end = sampleTrajectory(p.cloth, r.trajectories[i], r.end_time_s + 1);
     EXPECT_NEAR((end.position - r.final_balls[i].state.position).norm(), 0, 1e-9);
   }
-  EXPECT_TRUE(simulate(poolSimulationParams(), rectangularTable(2.54, 1.27), {cue}).trajectories.empty())
+  EXPECT_TRUE(
+      simulate(poolSimulationParams(), rectangularTable(2.54, 1.27), {cue}).trajectories.empty())
       << "nothing recorded unless asked";
 }
 
@@ -242,27 +251,29 @@ TEST(ShotSimulator, AJawActsAsACushionAlongItsContactNormalWithinItsRange) {
   BallState ball = ballAt(0, 0, 1.5, 0);
   ball.angular_velocity = {0, 1.5 / R, 0};  // rolling
   const SimulationResult r = simulate(p, table, {ball});
-  const auto hit = std::find_if(r.events.begin(), r.events.end(), [](const Event& e) { return e.kind == EventKind::Jaw; });
+  const auto hit = std::find_if(r.events.begin(), r.events.end(),
+                                [](const Event& e) { return e.kind == EventKind::Jaw; });
   ASSERT_NE(hit, r.events.end());
   EXPECT_NEAR(hit->before[0].position.x(), 1.0 - rho - R, kContactTolerance_m);
   const double V = hit->before[0].velocity.x();
-  const physics::CushionImpactResult model =
-      physics::solveCushionImpactExact(p.cushion, physics::incomingBall(V, M_PI / 2, V / R, 0), p.cushion_solver);
+  const physics::CushionImpactResult model = physics::solveCushionImpactExact(
+      p.cushion, physics::incomingBall(V, M_PI / 2, V / R, 0), p.cushion_solver);
   EXPECT_NEAR(hit->after[0].velocity.x(), model.after.v.y(), kCushionAccuracy * V);
   TableGeometry back;
   back.jaws.push_back({{1.0, 0.0}, rho, -M_PI / 2, M_PI / 2});  // faces +x: the ball meets its back
   for (const Event& e : simulate(p, back, {ball}).events) EXPECT_NE(e.kind, EventKind::Jaw);
 }
 
-// A 9-ball break on the shipped 9 ft table with its jaws and pockets: energy never grows at an event,
-// colliding balls touch at 2R, every ball ends pocketed or on the table, and the same break gives the
-// same events twice.
+// A 9-ball break on the shipped 9 ft table with its jaws and pockets: energy never grows at an
+// event, colliding balls touch at 2R, every ball ends pocketed or on the table, and the same break
+// gives the same events twice.
 TEST(ShotSimulator, NineBallBreakOnTheShippedTableKeepsItsInvariants) {
   const Table table = builtinTable("pool-9ft");
   const std::vector<PlacedBall> rack = placeRack("9-ball", table, builtinBallSet("pool"));
   SimulationParams p = poolSimulationParams();
   std::vector<BallState> balls;
-  for (const PlacedBall& placed : rack) balls.push_back(ballAt(placed.position_m.x(), placed.position_m.y()));
+  for (const PlacedBall& placed : rack)
+    balls.push_back(ballAt(placed.position_m.x(), placed.position_m.y()));
   const Eigen::Vector2d aim = (balls[1].position - balls[0].position).normalized();
   balls[0].velocity = {8 * aim.x(), 8 * aim.y() + 0.05, 0};
   const TableGeometry geometry = geometryOf(table);
@@ -275,7 +286,8 @@ TEST(ShotSimulator, NineBallBreakOnTheShippedTableKeepsItsInvariants) {
   }
   const SimulationResult again = simulate(p, geometry, balls);
   ASSERT_EQ(again.events.size(), r.events.size());
-  for (std::size_t i = 0; i < r.events.size(); ++i) EXPECT_EQ(again.events[i].time_s, r.events[i].time_s);
+  for (std::size_t i = 0; i < r.events.size(); ++i)
+    EXPECT_EQ(again.events[i].time_s, r.events[i].time_s);
 }
 
 // Regression (found by `baize stress`, seed 1, shot 7432): a ball at a few um/s that came to rest a
@@ -290,6 +302,67 @@ TEST(ShotSimulator, ABallComingToRestARoundingEarlyIsPredictedAgain) {
                                         ballAt(-0.40104131914652197, -0.2756166797827408)};
   const SimulationResult r = simulate(p, rectangularTable(2.54, 1.27), balls);
   for (const BallRecord& b : r.final_balls) EXPECT_EQ(b.state.velocity.norm(), 0);
+}
+
+// Sustained contact. Ball A at rest with topspin (slip u0) touches ball B: A's cloth friction
+// presses it into B, which it pushes ahead. With frictionless ball-ball contact the lasting contact
+// has a closed form: B rolls under the contact force N (a_B = 5/7 N/m - mu_r g), A slides
+// (a_A = mu_s g - N/m); equal accelerations give a = (5 mu_s - 7 mu_r) g / 12 until A's slip,
+// closing at (5/2 mu_s g + a), is gone at t* = u0 / (5/2 mu_s g + a); then both roll at v* = a t*.
+// The event loop keeps the contact as a train of small bounces (kSustainedContactSpeed_mps), whose
+// impulses average to N: B's speed after the push must match v*, and nothing may overlap.
+TEST(ShotSimulator, ABallPushedByASpinningBallMovesAsTheLastingContactSays) {
+  SimulationParams p = poolSimulationParams();
+  p.ball_ball.friction_law = physics::BallBallFrictionLaw::Constant;
+  p.ball_ball.constant_friction = 0;
+  p.cloth.rolling_friction = 1e-4;  // small, so that B's sliding spells barely matter (see below)
+  p.record_trajectories = true;
+  const double R = p.cushion.radius_m, g = p.cloth.gravity_mps2, mu = p.cloth.sliding_friction;
+  const double u0 = 1.0;  // m/s
+  BallState a = ballAt(0, 0), b = ballAt(2 * R, 0);
+  a.angular_velocity = {0, u0 / R, 0};  // contact point moving -x: friction drives A along +x
+  const SimulationResult r = simulate(p, rectangularTable(40, 4), {a, b});
+  expectEventInvariants(p, r);
+  EXPECT_LT(r.events.size(), 2000u) << "the push must not take a Zeno sequence of events";
+
+  const double accel = (5 * mu - 7 * p.cloth.rolling_friction) * g / 12;
+  const double t_end = u0 / (2.5 * mu * g + accel), v_end = accel * t_end;
+  // After the push both roll; sample B a little later, allowing for its rolling loss meanwhile.
+  const double t_sample = 1.5 * t_end;
+  const BallState b_later = sampleTrajectory(p.cloth, r.trajectories[1], t_sample);
+  const double expected = v_end - p.cloth.rolling_friction * g * (t_sample - t_end);
+  // Tolerance: B slides for a moment after each bounce and misses its rolling resistance then (a
+  // share of order 7 mu_r / (5 mu_s) of the acceleration), and the bounce train ripples.
+  EXPECT_NEAR(b_later.velocity.x(), expected, 0.01 * expected);
+  // Never apart by more than the train's ripple, never overlapping, while the push lasts.
+  for (double t = 0; t < t_end; t += 1e-4) {
+    const double gap = (sampleTrajectory(p.cloth, r.trajectories[1], t).position -
+                        sampleTrajectory(p.cloth, r.trajectories[0], t).position)
+                           .norm() -
+                       2 * R;
+    ASSERT_GE(gap, -kContactTolerance_m) << "at t = " << t;
+    ASSERT_LE(gap, 1e-6) << "at t = " << t;
+  }
+}
+
+// A ball sliding along a cushion with spin that presses it into the cushion stays on the table,
+// touches the cushion no closer than R, and comes to rest in a bounded number of events.
+TEST(ShotSimulator, ABallPressedIntoACushionSlidesAlongItAndStops) {
+  SimulationParams p = poolSimulationParams();
+  p.record_trajectories = true;
+  const double R = p.cushion.radius_m, L = 2.54, W = 1.27;
+  BallState ball = ballAt(L / 2 - R, 0, 0, 1.0);  // against the +x cushion, moving along it
+  ball.angular_velocity = {0, 20.0, 5.0};         // w_y > 0: friction drives it along +x
+  const SimulationResult r = simulate(p, rectangularTable(L, W), {ball});
+  expectEventInvariants(p, r);
+  int cushion_hits = 0;
+  for (const Event& e : r.events) cushion_hits += e.kind == EventKind::Cushion;
+  EXPECT_GT(cushion_hits, 10) << "the scene must press the ball into the cushion";
+  EXPECT_LT(r.events.size(), 5000u);
+  for (double t = 0; t < r.end_time_s; t += 1e-3) {
+    const BallState s = sampleTrajectory(p.cloth, r.trajectories[0], t);
+    ASSERT_LE(s.position.x(), L / 2 - R + kContactTolerance_m) << "at t = " << t;
+  }
 }
 
 TEST(ShotSimulator, BadScenesAreRejectedWithTheValue) {

@@ -395,6 +395,18 @@ TEST(PolynomialRootsTest, FirstClosingRootSkipsSeparation) {
   EXPECT_EQ(firstClosingRoot(quartic, 3.7, 5).outcome, RootOutcome::NoRoot);
 }
 
+TEST(PolynomialRootsTest, FirstClosingRootCatchesAnOverlapThatTurnsBackBeforeOpening) {
+  // Gap -(t - 1)^2 - 1e-6: overlapping throughout, opening until t = 1, closing after it. The
+  // contact never separated, so where it turns back is an event (touching and approaching).
+  const Coefficients turns_back{-1 - 1e-6, 2, -1, 0, 0};
+  EXPECT_NEAR(firstClosingRoot(turns_back, 0, 3).time, 1, 1e-9);
+  EXPECT_EQ(firstClosingRoot(turns_back, 0, 0.5).outcome, RootOutcome::NoRoot);  // still opening
+  // Opening past zero first: the event is where it closes again through zero, not the turn.
+  const Coefficients opens{-0.5, 0, 4, -4, 1};  // (t^2 - 2t)^2 - 0.5: opens at 0.46, peaks at 1
+  const double closes = 1 + std::sqrt(1 - std::sqrt(0.5));  // t^2 - 2t = -sqrt(0.5) again
+  EXPECT_NEAR(firstClosingRoot(opens, 0, 3).time, closes, conditionTolerance(opens, closes));
+}
+
 // ---- Inputs
 // ---------------------------------------------------------------------------------------
 
