@@ -77,11 +77,6 @@ bool staysApart(const PolynomialCoefficients& p, double horizon) {
   return p[0] - bound > 0;
 }
 
-// Furthest a ball can travel within dt along its current path, m (a bound, for skipping pairs).
-double reach(const physics::PositionQuadratic& path, double dt) {
-  return path.linear_mps.norm() * dt + path.quadratic_mps2.norm() * dt * dt;
-}
-
 // The cushion's local frame: y into the cushion (against the inward normal), x along it, z up.
 struct CushionFrame {
   Eigen::Vector3d x, y;
@@ -149,6 +144,46 @@ void releasePressedContact(const physics::CushionParams& ball, double energy_bef
   if (second) second->w *= scale;
 }
 
+// An axis-aligned box in the table plane, m: the broad phase that keeps pairs and cushions that
+// cannot meet away from the root finder.
+struct Box {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(kInfinity);
+  Eigen::Vector2d hi = Eigen::Vector2d::Constant(-kInfinity);
+  static Box around(const Eigen::Vector2d& centre, double radius) {
+    return {centre.array() - radius, centre.array() + radius};
+  }
+  static Box spanning(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return {a.cwiseMin(b), a.cwiseMax(b)};
+  }
+  Box inflated(double margin) const { return {lo.array() - margin, hi.array() + margin}; }
+  bool overlaps(const Box& o) const {
+    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y();
+  }
+};
+
+// Boxes are widened by this, m, so that rounding in the path's extremes cannot drop a contact
+// (positions are ~1 m, rounded to ~1e-16 m; contacts are located to ~1e-14 m).
+constexpr double kBoxMargin_m = 1e-9;
+
+// The box a ball of radius R sweeps along `path` over [0, duration] (everything, if the duration
+// is not finite).
+Box sweptBox(const physics::PositionQuadratic& path, double duration, double R) {
+  if (!std::isfinite(duration))
+    return {Eigen::Vector2d::Constant(-kInfinity), Eigen::Vector2d::Constant(kInfinity)};
+  Box box = Box::spanning(path.constant_m, path.at(duration));
+  for (int axis = 0; axis < 2; ++axis) {
+    const double q = path.quadratic_mps2[axis];
+    if (q == 0) continue;
+    const double turn = -path.linear_mps[axis] / (2 * q);  // where this coordinate turns back
+    if (turn > 0 && turn < duration) {
+      const double extreme = path.at(turn)[axis];
+      box.lo[axis] = std::min(box.lo[axis], extreme);
+      box.hi[axis] = std::max(box.hi[axis], extreme);
+    }
+  }
+  return box.inflated(R + kBoxMargin_m);
+}
+
 void validateInput(const SimulationParams& p, const TableGeometry& table,
                    const std::vector<BallState>& balls) {
   physics::validateClothParams(p.cloth);
@@ -180,25 +215,39 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
                            "a jaw needs a radius > 0 and an angle range of at most one turn");
     }
   }
+  auto who = [](std::size_t i) { return "ball " + std::to_string(i); };
   for (std::size_t i = 0; i < balls.size(); ++i) {
-    const std::string who = "ball " + std::to_string(i);
     try {
       physics::validateBallState(balls[i]);
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(who + ": " + e.what());
+      throw std::invalid_argument(who(i) + ": " + e.what());
     }
-    for (std::size_t j = 0; j < i; ++j) {
+  }
+  // Overlaps by a sweep along x: only balls less than 2R apart in x can overlap (n log n, so that
+  // a crowded table costs little).
+  std::vector<std::size_t> by_x(balls.size());
+  for (std::size_t i = 0; i < balls.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+    return std::make_pair(balls[a].position.x(), a) < std::make_pair(balls[b].position.x(), b);
+  });
+  for (std::size_t m = 0; m < by_x.size(); ++m) {
+    for (std::size_t k = m + 1;
+         k < by_x.size() && balls[by_x[k]].position.x() - balls[by_x[m]].position.x() < 2 * R;
+         ++k) {
+      const std::size_t i = std::max(by_x[m], by_x[k]), j = std::min(by_x[m], by_x[k]);
       const double gap = (balls[i].position - balls[j].position).norm() - 2 * R;
       if (gap < -kContactSlack_m) {
-        physics::rejectValue(who + " overlaps ball " + std::to_string(j) + ": their gap (m)", gap,
-                             "balls may touch but not overlap (gap >= 0)");
+        physics::rejectValue(who(i) + " overlaps ball " + std::to_string(j) + ": their gap (m)",
+                             gap, "balls may touch but not overlap (gap >= 0)");
       }
     }
+  }
+  for (std::size_t i = 0; i < balls.size(); ++i) {
     for (std::size_t k = 0; k < table.jaws.size(); ++k) {
       const JawArc& jaw = table.jaws[k];
       const double distance = (balls[i].position - jaw.centre_m).norm();
-      if (onArc(jaw, balls[i].position) && distance < jaw.radius_m + R - kContactSlack_m) {
-        physics::rejectValue(who + " is inside jaw " + std::to_string(k) +
+      if (distance < jaw.radius_m + R - kContactSlack_m && onArc(jaw, balls[i].position)) {
+        physics::rejectValue(who(i) + " is inside jaw " + std::to_string(k) +
                                  ": its centre's distance from the jaw's centre (m)",
                              distance, "it must be at least the jaw's radius plus the ball's");
       }
@@ -209,9 +258,9 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
       const double s = (balls[i].position - c.start_m).dot(along) / along.squaredNorm();
       const double distance = c.inward_normal.dot(balls[i].position - c.start_m);
       if (s >= 0 && s <= 1 && distance < R - kContactSlack_m) {
-        physics::rejectValue(
-            who + " is beyond cushion " + std::to_string(k) + ": its centre's distance from it (m)",
-            distance, "it must be at least the radius " + physics::valueText(R));
+        physics::rejectValue(who(i) + " is beyond cushion " + std::to_string(k) +
+                                 ": its centre's distance from it (m)",
+                             distance, "it must be at least the radius " + physics::valueText(R));
       }
     }
   }
@@ -284,158 +333,262 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   validateInput(p, table, input);
   const double R = p.cushion.radius_m;
   SimulationResult result;
-  std::vector<BallRecord> balls(input.size());
-  for (std::size_t i = 0; i < input.size(); ++i) balls[i].state = input[i];
+  const int n = static_cast<int>(input.size());
   if (p.record_trajectories) {
-    result.trajectories.resize(input.size());
-    for (std::size_t i = 0; i < input.size(); ++i)
-      result.trajectories[i].push_back({0, input[i], false});
+    result.trajectories.resize(n);
+    for (int i = 0; i < n; ++i) result.trajectories[i].push_back({0, input[i], false});
   }
+
+  // Each ball's state is kept at its own reference time and moved on only when an event involves
+  // it: a ball nothing happens to costs nothing per event. Its path, the time its motion state
+  // changes and the box it sweeps until then are computed once per state.
+  struct Ball {
+    BallState state;
+    double reference_time_s = 0;
+    double change_dt_s = kInfinity;   // from the reference time to its next state change
+    physics::PositionQuadratic path;  // from the reference time
+    bool moves = false;               // sliding or rolling: its centre moves
+    bool pocketed = false;
+    Box box;  // swept by the ball (inflated by R) until its state changes
+  };
+  std::vector<Ball> balls(n);
+  auto settle = [&](int i, double time_s) {
+    Ball& b = balls[i];
+    b.reference_time_s = time_s;
+    b.change_dt_s = physics::timeToStateChange(p.cloth, b.state);
+    b.path = physics::positionQuadratic(p.cloth, b.state);
+    b.moves = moving(p.cloth, b.state);
+    b.box = b.moves ? sweptBox(b.path, b.change_dt_s, R) : Box::around(b.state.position, R);
+  };
+  for (int i = 0; i < n; ++i) {
+    balls[i].state = input[i];
+    settle(i, 0);
+  }
+  // The path of ball i from time t on (a shift of its quadratic).
+  auto pathFrom = [&](int i, double t) {
+    const Ball& b = balls[i];
+    const double s = t - b.reference_time_s;
+    if (s == 0) return b.path;
+    physics::PositionQuadratic shifted = b.path;
+    shifted.constant_m = b.path.at(s);
+    shifted.linear_mps = b.path.linear_mps + 2 * s * b.path.quadratic_mps2;
+    return shifted;
+  };
+  std::vector<Box> cushion_boxes, jaw_boxes, pocket_boxes;
+  for (const CushionSegment& c : table.cushions)
+    cushion_boxes.push_back(Box::spanning(c.start_m, c.end_m));
+  for (const JawArc& jaw : table.jaws) jaw_boxes.push_back(Box::around(jaw.centre_m, jaw.radius_m));
+  for (const Circle& pocket : table.pockets)
+    pocket_boxes.push_back(Box::around(pocket.centre_m, pocket.radius_m));
+
   double now = 0;
   Candidate last;  // the contact resolved last, not to be found again at the same instant
   bool last_valid = false;
 
-  // Predictions are cached as absolute times and stay valid until one of their balls changes its
-  // motion (an event involving it, or its own state change): only those are solved again.
-  const int n = static_cast<int>(balls.size());
-  std::vector<Candidate> own(n);  // per ball: state change, cushion, jaw, pocket
-  std::vector<Candidate> pair(static_cast<std::size_t>(n) * n);  // per pair i < j at [i * n + j]
-  std::vector<bool> dirty(n, true);
-  std::vector<double> until(n, kInfinity);  // time from now to each ball's next state change
-  std::vector<physics::PositionQuadratic> path(n);
-  std::vector<char> moves(n, 0);  // sliding or rolling now
+  // Predictions, as absolute times, stay valid until one of their balls changes its motion; only
+  // those are solved again. own: a ball's state change, cushion, jaw or pocket; pair_time: when
+  // balls i < j touch, at [i * n + j]; next: each ball's earliest of its own and its pairs'.
+  std::vector<Candidate> own(n), next(n);
+  std::vector<double> pair_time(static_cast<std::size_t>(n) * n, kInfinity);
+  auto pairCandidate = [&](int i, int j) {
+    if (i > j) std::swap(i, j);
+    return Candidate{pair_time[static_cast<std::size_t>(i) * n + j], EventKind::BallBall, i, j};
+  };
+  // The first closing root of a gap polynomial in [0, horizon]; a gap the cheap bound shows to
+  // stay open is counted as skipped instead of solved.
+  auto solve = [&](const PolynomialCoefficients& gap, double horizon) {
+    if (staysApart(gap, horizon)) {
+      ++result.skipped_predictions;
+      return physics::RootSearchResult{};
+    }
+    ++result.predictions;
+    return physics::firstClosingRoot(gap, 0, horizon);
+  };
+  // A prediction made now: dt from now, stored as an absolute time (the just-resolved contact is
+  // not found again at the same instant).
+  auto absolute = [&](Candidate c) {
+    if (last_valid && c.dt_s == 0 && c.sameContact(last)) c.dt_s = kInfinity;
+    c.dt_s += now;
+    return c;
+  };
+  auto predictOwn = [&](int i) {  // ball i was settled at `now`
+    const Ball& b = balls[i];
+    Candidate best_own{b.change_dt_s, EventKind::StateChange, i};
+    if (b.moves) {
+      const double horizon = b.change_dt_s;
+      const physics::PositionQuadratic& path = b.path;
+      for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) {
+        if (!b.box.overlaps(cushion_boxes[k])) {
+          ++result.skipped_predictions;
+          continue;
+        }
+        const CushionSegment& c = table.cushions[k];
+        const PolynomialCoefficients gap = {c.inward_normal.dot(path.constant_m - c.start_m) - R,
+                                            c.inward_normal.dot(path.linear_mps),
+                                            c.inward_normal.dot(path.quadratic_mps2), 0, 0};
+        const physics::RootSearchResult hit = solve(gap, horizon);
+        if (hit.outcome != physics::RootOutcome::Root) continue;
+        const Eigen::Vector2d along = c.end_m - c.start_m;
+        const double s = (path.at(hit.time) - c.start_m).dot(along) / along.squaredNorm();
+        const Candidate candidate{hit.time, EventKind::Cushion, i, -1, k};
+        if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < best_own)
+          best_own = candidate;
+      }
+      for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
+        if (!b.box.overlaps(jaw_boxes[k])) {
+          ++result.skipped_predictions;
+          continue;
+        }
+        const JawArc& jaw = table.jaws[k];
+        const PolynomialCoefficients gap = squaredGap(path, jaw.centre_m, Eigen::Vector2d::Zero(),
+                                                      Eigen::Vector2d::Zero(), jaw.radius_m + R);
+        const physics::RootSearchResult hit = solve(gap, horizon);
+        const Candidate candidate{hit.time, EventKind::Jaw, i, -1, k};
+        if (hit.outcome == physics::RootOutcome::Root && onArc(jaw, path.at(hit.time)) &&
+            absolute(candidate).dt_s < kInfinity && candidate < best_own) {
+          best_own = candidate;
+        }
+      }
+      for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
+        if (!b.box.overlaps(pocket_boxes[k])) {
+          ++result.skipped_predictions;
+          continue;
+        }
+        const Circle& pocket = table.pockets[k];
+        const PolynomialCoefficients gap =
+            squaredGap(path, pocket.centre_m, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                       pocket.radius_m);
+        const physics::RootSearchResult hit = solve(gap, horizon);
+        const Candidate candidate{hit.time, EventKind::Pocket, i, -1, k};
+        if (hit.outcome == physics::RootOutcome::Root && candidate < best_own) best_own = candidate;
+      }
+    }
+    own[i] = absolute(best_own);
+  };
+  auto predictPair = [&](int i, int j) {  // i settled at `now`
+    double& cached = pair_time[static_cast<std::size_t>(std::min(i, j)) * n + std::max(i, j)];
+    cached = kInfinity;
+    const Ball &bi = balls[i], &bj = balls[j];
+    if (bj.pocketed) return;
+    if (!bi.moves && !bj.moves) {
+      ++result.skipped_predictions;
+      return;
+    }
+    // Cheap bound first: the boxes the two sweep until either changes state do not meet.
+    if (!bi.box.overlaps(bj.box)) {
+      ++result.skipped_predictions;
+      return;
+    }
+    const double horizon =
+        std::min(bi.moves ? bi.change_dt_s : kInfinity,
+                 bj.moves ? bj.reference_time_s + bj.change_dt_s - now : kInfinity);
+    const physics::PositionQuadratic path_i = bi.path, path_j = pathFrom(j, now);
+    const int a = std::min(i, j), b = std::max(i, j);  // the gap of the lower-numbered ball
+    const physics::PositionQuadratic& pa = a == i ? path_i : path_j;
+    const physics::PositionQuadratic& pb = a == i ? path_j : path_i;
+    const PolynomialCoefficients gap =
+        squaredGap(pa, pb.constant_m, pb.linear_mps, pb.quadratic_mps2, 2 * R);
+    const physics::RootSearchResult hit = solve(gap, std::max(0.0, horizon));
+    if (hit.outcome == physics::RootOutcome::Root)
+      cached = absolute({hit.time, EventKind::BallBall, a, b}).dt_s;
+  };
+  // Ball k's earliest candidate, from scratch.
+  // Ball k's earliest candidate, from scratch. A pair's prediction is finite only while one of its
+  // balls moves (it is predicted again when either changes), so a resting ball looks only at the
+  // moving ones.
+  std::vector<int> movers;  // the balls that move now
+  auto rescan = [&](int k) {
+    Candidate best = own[k];
+    auto consider = [&](int j) {
+      const Candidate c = pairCandidate(k, j);
+      if (j != k && c.dt_s < kInfinity && c < best) best = c;
+    };
+    if (balls[k].moves) {
+      for (int j = 0; j < n; ++j) consider(j);
+    } else {
+      for (int j : movers) consider(j);
+    }
+    next[k] = best;
+  };
 
+  std::vector<int> changed;            // balls whose motion changed at the last event
+  std::vector<char> is_changed(n, 1);  // the same, by ball
+  for (int i = 0; i < n; ++i) changed.push_back(i);
+  bool first_pass = true;  // every ball is new; pairs of resting balls are left unpredicted
   for (long count = 0;; ++count) {
     if (count == p.max_events) {
       throw std::runtime_error(
           "the shot did not come to rest within max_events = " + std::to_string(p.max_events) +
           " events (at t = " + physics::valueText(now) + " s)");
     }
-    for (int i = 0; i < n; ++i) {
-      if (balls[i].pocketed) continue;
-      until[i] = physics::timeToStateChange(p.cloth, balls[i].state);
-      path[i] = physics::positionQuadratic(p.cloth, balls[i].state);
-      moves[i] = moving(p.cloth, balls[i].state);
-    }
-    // The first closing root of a gap polynomial in [0, horizon]; a gap the cheap bound shows to
-    // stay open is counted as skipped instead of solved.
-    auto solve = [&](const PolynomialCoefficients& gap, double horizon) {
-      if (staysApart(gap, horizon)) {
-        ++result.skipped_predictions;
-        return physics::RootSearchResult{};
-      }
-      ++result.predictions;
-      return physics::firstClosingRoot(gap, 0, horizon);
-    };
-    // A prediction made now: dt from now, stored as an absolute time (the just-resolved contact is
-    // not found again at the same instant).
-    auto absolute = [&](Candidate c) {
-      if (last_valid && c.dt_s == 0 && c.sameContact(last)) c.dt_s = kInfinity;
-      c.dt_s += now;
-      return c;
-    };
-    for (int i = 0; i < n; ++i) {
-      if (!dirty[i]) continue;
-      own[i] = Candidate{};
-      if (balls[i].pocketed) continue;
-      Candidate best_own{until[i], EventKind::StateChange, i};
-      if (moves[i]) {
-        const double horizon = until[i];
-        for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) {
-          const CushionSegment& c = table.cushions[k];
-          const PolynomialCoefficients gap = {
-              c.inward_normal.dot(path[i].constant_m - c.start_m) - R,
-              c.inward_normal.dot(path[i].linear_mps), c.inward_normal.dot(path[i].quadratic_mps2),
-              0, 0};
-          const physics::RootSearchResult hit = solve(gap, horizon);
-          if (hit.outcome != physics::RootOutcome::Root) continue;
-          const Eigen::Vector2d along = c.end_m - c.start_m;
-          const double s = (path[i].at(hit.time) - c.start_m).dot(along) / along.squaredNorm();
-          const Candidate candidate{hit.time, EventKind::Cushion, i, -1, k};
-          if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < best_own)
-            best_own = candidate;
-        }
-        for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
-          const JawArc& jaw = table.jaws[k];
-          const PolynomialCoefficients gap =
-              squaredGap(path[i], jaw.centre_m, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
-                         jaw.radius_m + R);
-          const physics::RootSearchResult hit = solve(gap, horizon);
-          const Candidate candidate{hit.time, EventKind::Jaw, i, -1, k};
-          if (hit.outcome == physics::RootOutcome::Root && onArc(jaw, path[i].at(hit.time)) &&
-              absolute(candidate).dt_s < kInfinity && candidate < best_own) {
-            best_own = candidate;
-          }
-        }
-        for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
-          const Circle& pocket = table.pockets[k];
-          const PolynomialCoefficients gap =
-              squaredGap(path[i], pocket.centre_m, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
-                         pocket.radius_m);
-          const physics::RootSearchResult hit = solve(gap, horizon);
-          const Candidate candidate{hit.time, EventKind::Pocket, i, -1, k};
-          if (hit.outcome == physics::RootOutcome::Root && candidate < best_own)
-            best_own = candidate;
-        }
-      }
-      own[i] = absolute(best_own);
-    }
-    for (int i = 0; i < n; ++i) {
-      for (int j = i + 1; j < n; ++j) {
-        if (!dirty[i] && !dirty[j]) continue;
-        Candidate& cached = pair[static_cast<std::size_t>(i) * n + j];
-        cached = Candidate{};
-        if (balls[i].pocketed || balls[j].pocketed) continue;
-        const bool i_moves = moves[i], j_moves = moves[j];
-        if (!i_moves && !j_moves) {
-          ++result.skipped_predictions;
-          continue;
-        }
-        const double horizon =
-            std::min(i_moves ? until[i] : kInfinity, j_moves ? until[j] : kInfinity);
-        // Cheap bound first: too far apart to meet before either changes state.
-        const double apart = (balls[i].state.position - balls[j].state.position).norm() - 2 * R;
-        if (apart > reach(path[i], horizon) + reach(path[j], horizon)) {
-          ++result.skipped_predictions;
-          continue;
-        }
-        const PolynomialCoefficients gap = squaredGap(
-            path[i], path[j].constant_m, path[j].linear_mps, path[j].quadratic_mps2, 2 * R);
-        const physics::RootSearchResult hit = solve(gap, horizon);
-        if (hit.outcome == physics::RootOutcome::Root)
-          cached = absolute({hit.time, EventKind::BallBall, i, j});
-      }
-    }
-    std::fill(dirty.begin(), dirty.end(), false);
-    Candidate best;
-    for (const Candidate& c : own)
-      if (c.dt_s < kInfinity && c < best) best = c;
-    for (const Candidate& c : pair)
-      if (c.dt_s < kInfinity && c < best) best = c;
-    if (!(best.dt_s < kInfinity)) break;  // every ball at rest or pocketed
-    best.dt_s -= now;                     // back to time from now
-    if (best.dt_s < 0) best.dt_s = 0;     // rounding of the absolute time
-    // A state change happens exactly at the ball's transition time, where advanceWithinState sets
-    // the next state exactly (the absolute time round trip may have moved it by a rounding).
-    if (best.kind == EventKind::StateChange) {
-      if (!(until[best.ball] < kInfinity)) {  // a stale prediction: the ball is already at rest
-        dirty[best.ball] = true;
+    // Predict again what involves a ball that changed; each other ball's earliest candidate is
+    // then updated with its new pairs, or found again if it was one of the stale ones.
+    long resting = 0;  // first pass: balls at rest, whose pairs are skipped
+    for (int i : changed) {
+      if (balls[i].pocketed) {
+        own[i] = Candidate{};
+        for (int j = 0; j < n; ++j)
+          if (j != i)
+            pair_time[static_cast<std::size_t>(std::min(i, j)) * n + std::max(i, j)] = kInfinity;
         continue;
       }
-      best.dt_s = until[best.ball];
+      predictOwn(i);
+      if (first_pass && !balls[i].moves) {  // its pairs with resting balls: already empty
+        ++resting;
+        continue;
+      }
+      for (int j = 0; j < n; ++j) {
+        if (j == i) continue;
+        // A pair of two changed balls is predicted once, by the lower-numbered one (or, in the
+        // first pass, by the moving one).
+        if (j < i && is_changed[j] && !(first_pass && !balls[j].moves)) continue;
+        predictPair(i, j);
+      }
     }
+    if (first_pass) result.skipped_predictions += resting * (resting - 1) / 2;
+    first_pass = false;
+    movers.clear();
+    for (int k = 0; k < n; ++k)
+      if (balls[k].moves && !balls[k].pocketed) movers.push_back(k);
+    for (int k = 0; k < n; ++k) {
+      bool stale =
+          is_changed[k] ||
+          (next[k].dt_s < kInfinity &&
+           (is_changed[next[k].ball] || (next[k].other >= 0 && is_changed[next[k].other])));
+      if (stale) {
+        rescan(k);
+        continue;
+      }
+      for (int i : changed) {
+        const Candidate c = pairCandidate(k, i);
+        if (c.dt_s < kInfinity && c < next[k]) next[k] = c;
+      }
+    }
+    Candidate best;
+    for (const Candidate& c : next)
+      if (c.dt_s < kInfinity && c < best) best = c;
+    if (!(best.dt_s < kInfinity)) break;                 // every ball at rest or pocketed
+    const double event_time = std::max(best.dt_s, now);  // rounding of absolute times
+    for (int i : changed) is_changed[i] = 0;
+    changed.clear();
 
-    // Move every ball to the event's instant.
-    for (int i = 0; i < n; ++i) {
-      if (balls[i].pocketed) continue;
-      const double dt = std::min(best.dt_s, until[i]);
-      const physics::MotionState was = physics::motionState(p.cloth, balls[i].state);
-      if (dt > 0) balls[i].state = physics::advanceWithinState(p.cloth, balls[i].state, dt);
-      // Its motion changed on the way (at its transition time, or a rounding before it): predict it
-      // again.
-      if (dt == until[i] || physics::motionState(p.cloth, balls[i].state) != was) dirty[i] = true;
+    // Move the balls involved to the event's instant. A state change happens exactly at the ball's
+    // transition time, where advanceWithinState sets the next state exactly.
+    auto moveTo = [&](int i) {
+      Ball& b = balls[i];
+      const double dt = best.kind == EventKind::StateChange
+                            ? b.change_dt_s
+                            : std::min(event_time - b.reference_time_s, b.change_dt_s);
+      if (dt > 0) b.state = physics::advanceWithinState(p.cloth, b.state, dt);
+    };
+    if (best.kind == EventKind::StateChange && !(balls[best.ball].change_dt_s < kInfinity)) {
+      changed.push_back(best.ball);  // a stale prediction: predict it again
+      is_changed[best.ball] = 1;
+      continue;
     }
-    now += best.dt_s;
+    moveTo(best.ball);
+    if (best.kind == EventKind::BallBall) moveTo(best.other);
+    now = event_time;
     last = best;
     last_valid = true;
 
@@ -446,6 +599,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     event.other = best.other;
     event.index = best.index;
     BallState& a = balls[best.ball].state;
+    const physics::PositionQuadratic path_a = balls[best.ball].path;
     event.before.push_back(a);
     if (best.kind == EventKind::BallBall) event.before.push_back(balls[best.other].state);
     switch (best.kind) {
@@ -464,7 +618,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
                 : Eigen::Vector2d((a.position - table.jaws[best.index].centre_m).normalized());
         const CushionFrame frame(normal);
         const physics::BallVelocity local = frame.toLocal(a);
-        const bool pressed = path[best.ball].quadratic_mps2.dot(normal) < 0;
+        const bool pressed = path_a.quadratic_mps2.dot(normal) < 0;
         if (local.v.y() > 0 || pressed) {
           physics::BallVelocity after = local;
           if (local.v.y() > 0)
@@ -484,8 +638,9 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         const physics::BallVelocity va{a.velocity, a.angular_velocity},
             vb{b.velocity, b.angular_velocity};
         const bool approaching = physics::approachSpeed(va, vb, normal) > 0;
-        const bool pressed = (path[best.ball].quadratic_mps2 - path[best.other].quadratic_mps2)
-                                 .dot(normal.head<2>()) > 0;
+        const bool pressed =
+            (path_a.quadratic_mps2 - balls[best.other].path.quadratic_mps2).dot(normal.head<2>()) >
+            0;
         if (approaching || pressed) {
           physics::BallVelocity a_after = va, b_after = vb;
           if (approaching) {
@@ -510,8 +665,14 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     }
     event.after.push_back(a);
     if (best.kind == EventKind::BallBall) event.after.push_back(balls[best.other].state);
-    dirty[best.ball] = true;
-    if (best.kind == EventKind::BallBall) dirty[best.other] = true;
+    changed.push_back(best.ball);
+    is_changed[best.ball] = 1;
+    settle(best.ball, now);
+    if (best.kind == EventKind::BallBall) {
+      changed.push_back(best.other);
+      is_changed[best.other] = 1;
+      settle(best.other, now);
+    }
     if (p.record_trajectories &&
         best.kind != EventKind::StateChange) {  // a state change is in closed form
       result.trajectories[best.ball].push_back({now, a, balls[best.ball].pocketed});
@@ -522,10 +683,13 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   }
   // Balls at rest are reported exactly at rest (a speed below the at-rest threshold, left by a
   // transition a rounding early, is not motion).
-  for (BallRecord& b : balls) {
-    if (!b.pocketed) b.state = physics::advanceWithinState(p.cloth, b.state, 0);
+  result.final_balls.resize(n);
+  for (int i = 0; i < n; ++i) {
+    result.final_balls[i].pocketed = balls[i].pocketed;
+    result.final_balls[i].state = balls[i].pocketed
+                                      ? balls[i].state
+                                      : physics::advanceWithinState(p.cloth, balls[i].state, 0);
   }
-  result.final_balls = balls;
   result.end_time_s = now;
   return result;
 }
