@@ -65,10 +65,29 @@ PolynomialCoefficients squaredGap(const physics::PositionQuadratic& path,
           q.dot(q)};
 }
 
-// Whether gap polynomial p stays positive on [0, horizon] by the bound p(t) >= c0 - sum |c_k| T^k:
-// then it has no root there and the root finder need not run.
+// A quadratic's lowest value on an interval counts as positive when it exceeds this many unit
+// roundoffs of the magnitudes it was computed from (a handful of operations, with room).
+constexpr double kQuadraticBoundRoundoffs = 16;
+
+// Whether gap polynomial p stays positive on [0, horizon], so that the root finder need not run: a
+// quadratic (a straight cushion) by its lowest value there, exactly; a quartic by the bound
+// p(t) >= c0 - sum |c_k| T^k.
 bool staysApart(const PolynomialCoefficients& p, double horizon) {
   if (!(p[0] > 0) || !std::isfinite(horizon)) return false;
+  if (p[3] == 0 && p[4] == 0) {
+    const double c0 = p[0], c1 = p[1], c2 = p[2];
+    const double vertex = c2 > 0 ? -c1 / (2 * c2) : -1;  // where a convex gap is lowest
+    double lowest, magnitude;
+    if (vertex > 0 && vertex < horizon) {
+      const double drop = c1 * c1 / (4 * c2);
+      lowest = c0 - drop;
+      magnitude = c0 + drop;
+    } else {
+      lowest = std::min(c0, c0 + (c1 + c2 * horizon) * horizon);
+      magnitude = c0 + (std::abs(c1) + std::abs(c2) * horizon) * horizon;
+    }
+    return lowest > kQuadraticBoundRoundoffs * 0x1p-53 * magnitude;
+  }
   double bound = 0, power = 1;
   for (int k = 1; k < 5; ++k) {
     power *= horizon;
@@ -349,7 +368,10 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     physics::PositionQuadratic path;  // from the reference time
     bool moves = false;               // sliding or rolling: its centre moves
     bool pocketed = false;
-    Box box;  // swept by the ball (inflated by R) until its state changes
+    // Until when its path holds for certain (its next own event: a state change, cushion, jaw or
+    // pocket; pairs are predicted no further) and the box it sweeps (inflated by R) until then.
+    double valid_until_s = kInfinity;
+    Box box;
   };
   std::vector<Ball> balls(n);
   auto settle = [&](int i, double time_s) {
@@ -412,11 +434,17 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     return c;
   };
   auto predictOwn = [&](int i) {  // ball i was settled at `now`
-    const Ball& b = balls[i];
+    Ball& b = balls[i];
     Candidate best_own{b.change_dt_s, EventKind::StateChange, i};
+    // The ball's motion changes at its first own event: nothing after it needs predicting, so the
+    // horizon and the swept box shrink to it as events are found (cushions first: cheap).
+    double horizon = b.change_dt_s;
     if (b.moves) {
-      const double horizon = b.change_dt_s;
       const physics::PositionQuadratic& path = b.path;
+      auto shrinkTo = [&](const Candidate& found) {
+        horizon = found.dt_s;
+        b.box = sweptBox(path, horizon, R);
+      };
       for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) {
         if (!b.box.overlaps(cushion_boxes[k])) {
           ++result.skipped_predictions;
@@ -434,6 +462,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < best_own)
           best_own = candidate;
       }
+      shrinkTo(best_own);
       for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) {
         if (!b.box.overlaps(jaw_boxes[k])) {
           ++result.skipped_predictions;
@@ -449,6 +478,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           best_own = candidate;
         }
       }
+      shrinkTo(best_own);
       for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
         if (!b.box.overlaps(pocket_boxes[k])) {
           ++result.skipped_predictions;
@@ -462,7 +492,9 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         const Candidate candidate{hit.time, EventKind::Pocket, i, -1, k};
         if (hit.outcome == physics::RootOutcome::Root && candidate < best_own) best_own = candidate;
       }
+      shrinkTo(best_own);
     }
+    b.valid_until_s = now + horizon;
     own[i] = absolute(best_own);
   };
   auto predictPair = [&](int i, int j) {  // i settled at `now`
@@ -479,9 +511,8 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
       ++result.skipped_predictions;
       return;
     }
-    const double horizon =
-        std::min(bi.moves ? bi.change_dt_s : kInfinity,
-                 bj.moves ? bj.reference_time_s + bj.change_dt_s - now : kInfinity);
+    const double horizon = std::min(bi.moves ? bi.valid_until_s - now : kInfinity,
+                                    bj.moves ? bj.valid_until_s - now : kInfinity);
     const physics::PositionQuadratic path_i = bi.path, path_j = pathFrom(j, now);
     const int a = std::min(i, j), b = std::max(i, j);  // the gap of the lower-numbered ball
     const physics::PositionQuadratic& pa = a == i ? path_i : path_j;
@@ -524,15 +555,19 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     // Predict again what involves a ball that changed; each other ball's earliest candidate is
     // then updated with its new pairs, or found again if it was one of the stale ones.
     long resting = 0;  // first pass: balls at rest, whose pairs are skipped
+    // Own events first: a pair is predicted only as far as both balls' paths hold.
     for (int i : changed) {
-      if (balls[i].pocketed) {
-        own[i] = Candidate{};
-        for (int j = 0; j < n; ++j)
-          if (j != i)
-            pair_time[static_cast<std::size_t>(std::min(i, j)) * n + std::max(i, j)] = kInfinity;
+      if (!balls[i].pocketed) {
+        predictOwn(i);
         continue;
       }
-      predictOwn(i);
+      own[i] = Candidate{};
+      for (int j = 0; j < n; ++j)
+        if (j != i)
+          pair_time[static_cast<std::size_t>(std::min(i, j)) * n + std::max(i, j)] = kInfinity;
+    }
+    for (int i : changed) {
+      if (balls[i].pocketed) continue;
       if (first_pass && !balls[i].moves) {  // its pairs with resting balls: already empty
         ++resting;
         continue;

@@ -141,8 +141,20 @@ double bisectionPoint(double lo, double hi) {
 double refineBracketedRoot(const Polynomial& p, const Polynomial& dp, double lo, double value_lo,
                            double hi, double value_hi) {
   const bool rising = value_lo < 0;
-  // First guess: where the chord crosses zero (exact for a straight line).
+  // First guess: where the chord crosses zero (exact for a straight line), or for a quadratic its
+  // root in the bracket from the closed form (Newton then only polishes it).
   double x = lo + (hi - lo) * (value_lo / (value_lo - value_hi));
+  if (p.degree == 2) {
+    const double a = p.c[2], b = p.c[1], c = p.c[0];
+    const double discriminant = b * b - 4 * a * c;
+    if (discriminant >= 0) {
+      // The cancellation-free pair: q = -(b + sign(b) sqrt(D)) / 2, roots q / a and c / q.
+      const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
+      for (const double root : {q / a, c / q}) {
+        if (root > lo && root < hi) x = root;
+      }
+    }
+  }
   if (!(x > lo && x < hi)) x = bisectionPoint(lo, hi);
   double previous_move = hi - lo;
   std::uint64_t count_at_window_start = doublesBetween(lo, hi);
@@ -325,16 +337,32 @@ bool isZero(const PolynomialCoefficients& c) {
 // so no root moves), except that a coefficient over 2^1074 times smaller than the largest
 // underflows. Huge and tiny coefficients then neither overflow nor lose precision in the search.
 Polynomial normalizedPolynomial(const PolynomialCoefficients& c) {
+  // The exponents straight from the bits (frexp and ldexp are library calls, and this runs for
+  // every prediction); the results are the same.
+  auto exponentOf = [](double x) {  // |x| in [2^(e-1), 2^e), as frexp gives it
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+    if (biased != 0) return biased - 1022;
+    int exponent;  // subnormal
+    std::frexp(x, &exponent);
+    return exponent;
+  };
   int largest_exponent = INT_MIN;
   for (double x : c) {
-    if (x == 0) continue;
-    int exponent;
-    std::frexp(x, &exponent);
-    largest_exponent = std::max(largest_exponent, exponent);
+    if (x != 0) largest_exponent = std::max(largest_exponent, exponentOf(x));
   }
   std::array<double, 5> scaled{};
-  for (int i = 0; i < 5; ++i) {
-    if (c[i] != 0) scaled[i] = std::ldexp(c[i], -largest_exponent);
+  const int scale_biased = 1023 - largest_exponent;  // the bits of 2^-largest_exponent
+  if (scale_biased >= 1 && scale_biased <= 2046) {
+    const std::uint64_t bits = static_cast<std::uint64_t>(scale_biased) << 52;
+    double scale;
+    std::memcpy(&scale, &bits, sizeof scale);
+    for (int i = 0; i < 5; ++i) scaled[i] = c[i] * scale;  // exact, as ldexp (or rounded alike)
+  } else {
+    for (int i = 0; i < 5; ++i) {
+      if (c[i] != 0) scaled[i] = std::ldexp(c[i], -largest_exponent);
+    }
   }
   return makePolynomial(scaled);
 }
