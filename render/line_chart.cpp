@@ -326,6 +326,10 @@ void drawAxisLabelsAndTitle(cairo_t* cr, const LineChart& chart, const ChartLayo
   }
   if (!chart.title.empty()) {
     setFont(cr, m.title_font_px);
+    // A title wider than the image is shrunk to fit rather than cut off.
+    const double room_px = width_px - 2 * m.gap_px;
+    const double full_width_px = textWidth(cr, chart.title);
+    if (full_width_px > room_px) setFont(cr, m.title_font_px * room_px / full_width_px);
     const double title_x = std::max(m.gap_px, width_px / 2.0 - textWidth(cr, chart.title) / 2);
     showText(cr, chart.title, title_x, m.gap_px + fontMetrics(cr).ascent);
     setFont(cr, m.font_px);

@@ -39,6 +39,50 @@ for path in sys.argv[3:]:
 EOF_PY
 }
 
+# count_palette_colours EXPECTED FILES...: each PNG (8-bit RGB, as Cairo writes an opaque image)
+# shows exactly EXPECTED of the chart palette's colours (render/line_chart.cpp), i.e. holds that
+# many series: every series draws its colour at least in the legend, and nothing else uses them.
+count_palette_colours() {
+  python3 - "$@" <<'EOF_PY' || fail "colour count check failed: see above"
+import struct, sys, zlib
+palette = [(0x00, 0x72, 0xB2), (0xD5, 0x5E, 0x00), (0x00, 0x9E, 0x73), (0xCC, 0x79, 0xA7),
+           (0xE6, 0x9F, 0x00), (0x56, 0xB4, 0xE9)]
+def pixels(path):
+    data, offset, idat = open(path, "rb").read(), 8, b""
+    while offset < len(data):
+        length, kind = struct.unpack(">I4s", data[offset:offset + 8])
+        body = data[offset + 8:offset + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour_type = struct.unpack(">IIBB", body[:10])
+            assert (depth, colour_type) == (8, 2), f"{path}: not 8-bit RGB"
+        elif kind == b"IDAT":
+            idat += body
+        offset += 12 + length
+    raw, stride, previous, seen = zlib.decompress(idat), width * 3, bytearray(width * 3), set()
+    for row in range(height):  # undo the PNG row filters (None, Sub, Up, Average, Paeth)
+        start = row * (stride + 1)
+        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
+        for i in range(stride):
+            a = line[i - 3] if i >= 3 else 0
+            b = previous[i]
+            c = previous[i - 3] if i >= 3 else 0
+            if kind == 1: line[i] = (line[i] + a) & 255
+            elif kind == 2: line[i] = (line[i] + b) & 255
+            elif kind == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        seen.update(zip(line[0::3], line[1::3], line[2::3]))
+        previous = line
+    return seen
+expected = int(sys.argv[1])
+for path in sys.argv[2:]:
+    found = [c for c in palette if c in pixels(path)]
+    assert len(found) == expected, f"{path}: {len(found)} series colours, expected {expected}"
+EOF_PY
+}
+
 # expect_error STATUS TEXT ARGS...: baize ARGS must exit STATUS, print TEXT on stderr and nothing
 # on stdout.
 expect_error() {
@@ -56,19 +100,22 @@ charts=(fig6-rebound-speed fig6-rebound-angle fig7-rebound-speed fig7-rebound-an
 
 # ---- 1. A sweep (the paper solver with few steps: quick, and the charts do not care) to PNGs.
 "$baize" cushion --sweep "$work/sweep" --solver paper --steps 200 >/dev/null || fail "sweep exited $?"
-"$baize" chart sweep "$work/sweep" --width 800 --height 500 >"$work/out" || fail "chart sweep exited $?"
+"$baize" chart sweep "$work/sweep" --width 480 --height 320 >"$work/out" || fail "chart sweep exited $?"
 for chart in "${charts[@]}"; do
   grep -qxF "wrote $work/sweep/$chart.png" "$work/out" || fail "no 'wrote' line for $chart"
 done
 pngs=()
 for chart in "${charts[@]}"; do pngs+=("$work/sweep/$chart.png"); done
-check_png 800 500 "${pngs[@]}"
+check_png 480 320 "${pngs[@]}"
 [[ -z $(find "$work/sweep" -name '*.tmp') ]] || fail "chart sweep left temporary files"
+# One series per curve of the sweep (5 in figures 6-8), one per contact in figure 10.
+count_palette_colours 5 "$work"/sweep/fig{6,7,8}-rebound-{speed,angle}.png
+count_palette_colours 2 "$work"/sweep/fig10-slip-{speed,angle}.png
 
 # ---- 2. The same input gives the same bytes; the default size is 960 x 600.
 mkdir "$work/again"
 cp "$work"/sweep/*.csv "$work/again/"
-"$baize" chart sweep "$work/again" --width 800 --height 500 >/dev/null || fail "second run exited $?"
+"$baize" chart sweep "$work/again" --width 480 --height 320 >/dev/null || fail "second run exited $?"
 for chart in "${charts[@]}"; do
   cmp -s "$work/sweep/$chart.png" "$work/again/$chart.png" || fail "$chart.png differs between runs"
 done
@@ -84,6 +131,9 @@ cmp -s "$work/sweep/fig6-rebound-speed.png" "$work/again/fig6-rebound-speed.png"
   fail "chart bench-cushion exited $?"
 grep -qxF "wrote $work/bench.png" "$work/out" || fail "no 'wrote' line for the bench chart"
 check_png 960 600 "$work/bench.png"
+"$baize" chart bench-cushion "$work/bench.csv" --png "$work/bench-small.png" --width 480 \
+  --height 320 >/dev/null || fail "chart bench-cushion --width 480 exited $?"
+count_palette_colours 2 "$work/bench-small.png"  # paper and exact
 
 # ---- 4. Bad input: a clear message, exit status 2 (usage) or 1 (failure), and no PNG at all.
 mkdir "$work/bad"
