@@ -1,5 +1,6 @@
 #include "render/chart_axis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -14,6 +15,21 @@ namespace {
 // round-off. Dimensionless (fraction of one step).
 constexpr double kOnTickFraction = 1e-9;
 
+// Ticks are computed with powers of ten, which overflow past 1e308: values beyond this are
+// refused rather than drawn wrongly.
+constexpr double kLargestAxisMagnitude = 1e300;
+// A linear range narrower than this fraction of its values' size is round-off (a quantity that is
+// constant up to its last bits) and is drawn as the one value it is. Dimensionless.
+constexpr double kFlatRangeFraction = 1e-12;
+// Below this a linear step's power of ten would underflow. Same unit as the data.
+constexpr double kSmallestStep = 1e-290;
+// More ticks than this cannot be labelled on any image the charts allow (8192 px).
+constexpr int kMaxTargetCount = 100;
+// Linear labels use plain decimals for steps of 10^-4 to 10^5 and exponent notation outside, so
+// that no label runs to twenty digits.
+constexpr int kSmallestFixedExponent = -4;
+constexpr int kLargestFixedExponent = 5;
+
 // The 1-2-5 mantissas of a linear step, in increasing order.
 constexpr int kStepMantissas[] = {1, 2, 5};
 
@@ -21,8 +37,17 @@ constexpr int kStepMantissas[] = {1, 2, 5};
 constexpr int kDecadeStepMantissas[] = {1, 2, 5};
 
 void requireTargetCount(int target_count) {
-  if (target_count < 2) {
-    physics::rejectValue("axis tick count", target_count, "it must be >= 2");
+  if (target_count < 2 || target_count > kMaxTargetCount) {
+    physics::rejectValue("axis tick count", target_count,
+                         "it must lie in [2, " + std::to_string(kMaxTargetCount) + "]");
+  }
+}
+
+void requireChartable(const char* what, double value) {
+  physics::requireFinite(what, value);
+  if (std::fabs(value) > kLargestAxisMagnitude) {
+    physics::rejectValue(what, value,
+                         "its size must be at most " + physics::valueText(kLargestAxisMagnitude));
   }
 }
 
@@ -42,19 +67,23 @@ const char* superscriptDigit(int digit) {
 }  // namespace
 
 AxisTicks linearTicks(double data_low, double data_high, int target_count) {
-  physics::requireFinite("axis low end", data_low);
-  physics::requireFinite("axis high end", data_high);
+  requireChartable("axis low end", data_low);
+  requireChartable("axis high end", data_high);
   if (data_low > data_high) {
     physics::rejectValue("axis low end", data_low,
                          "it must be <= the high end " + physics::valueText(data_high));
   }
   requireTargetCount(target_count);
-  if (data_low == data_high) {
+  const double size = std::max(std::fabs(data_low), std::fabs(data_high));
+  if (data_high - data_low <= kFlatRangeFraction * size ||
+      data_high - data_low < kSmallestStep * target_count) {
     // One value: an axis one unit of its own decade wide each side, so the value sits mid-axis.
-    const double pad =
-        data_low == 0 ? 1.0 : std::pow(10.0, std::floor(std::log10(std::fabs(data_low))));
-    data_low -= pad;
-    data_high += pad;
+    const double value = data_low + (data_high - data_low) / 2;
+    const double pad = std::fabs(value) < kSmallestStep
+                           ? 1.0
+                           : std::pow(10.0, std::floor(std::log10(std::fabs(value))));
+    data_low = value - pad;
+    data_high = value + pad;
   }
   const double raw_step = (data_high - data_low) / target_count;
   int exponent = static_cast<int>(std::floor(std::log10(raw_step)));
@@ -68,7 +97,7 @@ AxisTicks linearTicks(double data_low, double data_high, int target_count) {
       AxisTicks ticks;
       ticks.scale = AxisScale::Linear;
       ticks.step = step;
-      ticks.label_decimals = exponent < 0 ? -exponent : 0;
+      ticks.step_exponent = exponent;
       for (long long i = first; i <= last; ++i) {
         ticks.major.push_back(tickValue(i, mantissa, exponent));
       }
@@ -80,10 +109,14 @@ AxisTicks linearTicks(double data_low, double data_high, int target_count) {
 }
 
 AxisTicks logTicks(double data_low, double data_high, int target_count) {
-  physics::requireFinite("log axis low end", data_low);
-  physics::requireFinite("log axis high end", data_high);
+  requireChartable("log axis low end", data_low);
+  requireChartable("log axis high end", data_high);
   if (!(data_low > 0)) {
     physics::rejectValue("log axis low end", data_low, "a logarithmic axis needs values > 0");
+  }
+  if (data_low < 1 / kLargestAxisMagnitude) {
+    physics::rejectValue("log axis low end", data_low,
+                         "it must be at least " + physics::valueText(1 / kLargestAxisMagnitude));
   }
   if (data_low > data_high) {
     physics::rejectValue("log axis low end", data_low,
@@ -133,7 +166,14 @@ std::string tickLabel(const AxisTicks& ticks, double value) {
     return label;
   }
   char text[64];
-  std::snprintf(text, sizeof text, "%.*f", ticks.label_decimals, value);
+  const int exponent = ticks.step_exponent;
+  if (value != 0 && (exponent < kSmallestFixedExponent || exponent > kLargestFixedExponent)) {
+    // As many significant digits as lie between the value's leading digit and the step's.
+    const int leading = static_cast<int>(std::floor(std::log10(std::fabs(value)) + 1e-9));
+    std::snprintf(text, sizeof text, "%.*e", std::max(0, leading - exponent), value);
+    return text;
+  }
+  std::snprintf(text, sizeof text, "%.*f", exponent < 0 ? -exponent : 0, value);
   std::string label = text;
   // A tick at -1e-17 prints as "-0.0": zero has no sign.
   if (label.find_first_not_of("-0.") == std::string::npos && label[0] == '-') label.erase(0, 1);

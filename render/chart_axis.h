@@ -21,22 +21,25 @@ struct AxisTicks {
   // Linear axes: the step between major ticks, 1, 2 or 5 times a power of ten. Log axes: the step
   // between major ticks in decades (1, 2, 5, 10, ...).
   double step = 1;
-  int label_decimals = 0;  // linear axes: the decimals a label needs to show the step exactly
+  int step_exponent = 0;  // linear axes: step = 1, 2 or 5 x 10^step_exponent (sets label digits)
 };
 
 // Ticks for data in [data_low, data_high] on a linear axis, about `target_count` major ticks
-// (at least 2). The step is the smallest 1-2-5 step giving at most `target_count` intervals. A
-// range of zero width is widened to one unit of its own size (or [v - 1, v + 1] around zero).
-// Throws std::invalid_argument for non-finite bounds, data_low > data_high or target_count < 2.
+// (2 to 100). The step is the smallest 1-2-5 step giving at most `target_count` intervals. A
+// range of zero width (or of round-off width, below 1e-12 of the values) is widened to one unit of
+// its value's decade each side (or [v - 1, v + 1] around zero). Throws std::invalid_argument for
+// bounds that are not finite or exceed 1e300 in size, data_low > data_high, or a bad count.
 AxisTicks linearTicks(double data_low, double data_high, int target_count);
 
 // Ticks for data in [data_low, data_high] (both > 0) on a log axis: the range is widened to whole
 // decades; major ticks every `step` decades with step from 1, 2, 5, 10, ... such that there are at
-// most `target_count` intervals; minor ticks at 2..9 x 10^k when the step is one decade.
+// most `target_count` intervals; minor ticks at 2..9 x 10^k when the step is one decade. Values
+// must lie in [1e-300, 1e300].
 AxisTicks logTicks(double data_low, double data_high, int target_count);
 
 // The text under a major tick: "0.25", "-10", "1500" on linear axes (as many decimals as the step
-// needs); "10⁻⁶", "1", "10", "10³" (UTF-8 superscripts) on log axes.
+// needs; "1.5e-06", "2e+07" for steps below 10^-4 or above 10^5); "10⁻⁶", "1", "10", "10³" (UTF-8
+// superscripts) on log axes.
 std::string tickLabel(const AxisTicks& ticks, double value);
 
 // Data value -> pixel coordinate along one axis: `low` of the ticks maps to pixel_at_low and

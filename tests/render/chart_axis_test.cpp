@@ -64,6 +64,19 @@ TEST(LinearTicks, HandWorkedRanges) {
   EXPECT_EQ(linearTicks(-3.7, 12.1, 6).step, 5);
 }
 
+// A quantity constant up to round-off (here 1 and the next double above it) is drawn flat, with
+// the labels of a zero-width range rather than sixteen decimals.
+TEST(LinearTicks, RoundOffWidthRangeIsDrawnAsOneValue) {
+  const AxisTicks flat = linearTicks(1, std::nextafter(1.0, 2.0), 4);
+  EXPECT_EQ(flat.low, 0);
+  EXPECT_EQ(flat.high, 2);
+  EXPECT_EQ(flat.step, 0.5);  // [0, 2] in 4 intervals
+  // Tiny values that are not round-off keep their own scale.
+  const AxisTicks tiny = linearTicks(2e-9, 7e-9, 5);
+  EXPECT_NEAR(tiny.step, 1e-9, 1e-9 * kTickRoundOff);
+  EXPECT_EQ(tickLabel(tiny, tiny.major[1]), "3e-09");
+}
+
 TEST(LinearTicks, ZeroWidthRangeIsCentredOnTheValue) {
   const AxisTicks around_zero = linearTicks(0, 0, 4);
   EXPECT_EQ(around_zero.low, -1);
@@ -168,6 +181,16 @@ TEST(TickLabel, ShowsTheStepsDecimals) {
   EXPECT_EQ(tickLabel(decades, 10), "10");
   EXPECT_EQ(tickLabel(decades, 1e3), "10³");
   EXPECT_EQ(tickLabel(logTicks(1e-12, 1e-10, 4), 1e-12), "10⁻¹²");
+  // Steps past 10^5 and below 10^-4 in exponent notation with the digits the step needs.
+  const AxisTicks millions = linearTicks(0, 3e7, 6);  // step 5e6
+  EXPECT_EQ(tickLabel(millions, 1.5e7), "1.5e+07");
+  EXPECT_EQ(tickLabel(millions, 0), "0");
+  const AxisTicks large = linearTicks(0, 3e6, 6);  // step 5e5: still plain digits
+  EXPECT_EQ(tickLabel(large, 1.5e6), "1500000");
+  const AxisTicks micro = linearTicks(1e-5, 3e-5, 4);  // step 5e-6
+  EXPECT_EQ(tickLabel(micro, 1.5e-5), "1.5e-05");
+  const AxisTicks fine = linearTicks(0, 1e-3, 5);  // step 2e-4: still plain decimals
+  EXPECT_EQ(tickLabel(fine, fine.major[1]), "0.0002");
 }
 
 TEST(AxisTicks, BadInputIsRejected) {
@@ -175,6 +198,9 @@ TEST(AxisTicks, BadInputIsRejected) {
   expectValueRejected([] { linearTicks(0, INFINITY, 4); }, "axis high end = inf");
   expectValueRejected([] { linearTicks(2, 1, 4); }, "axis low end = 2");
   expectValueRejected([] { linearTicks(0, 1, 1); }, "axis tick count = 1");
+  expectValueRejected([] { linearTicks(0, 1, 101); }, "axis tick count = 101");
+  expectRejected([] { linearTicks(-1e305, 1, 4); }, {"axis low end = -9.99", "at most 1"});
+  expectRejected([] { logTicks(1e-310, 1, 4); }, {"log axis low end = 9.99", "at least 1"});
   expectValueRejected([] { logTicks(0, 1, 4); }, "log axis low end = 0");
   expectValueRejected([] { logTicks(-1, 1, 4); }, "log axis low end = -1");
   expectRejected([] { logTicks(10, 1, 4); }, {"log axis low end = 10", "high end 1"});

@@ -189,8 +189,8 @@ TEST(LineChart, MarkersAreDrawnAtTheirPoints) {
     const double column = layout.x_to_pixel.toPixel(p.x);
     const double row = layout.y_to_pixel.toPixel(p.y);
     EXPECT_EQ(image.at(column, row), paletteColour(3));
-    // No line joins the markers: half-way between them is background.
   }
+  // No line joins the markers: half-way between them is background.
   const double mid_column = layout.x_to_pixel.toPixel(4.5);
   const double mid_row = layout.y_to_pixel.toPixel(2.45);
   EXPECT_NE(image.at(mid_column, mid_row), paletteColour(3));
