@@ -36,8 +36,10 @@ constexpr const char* kFontFamily = "DejaVu Sans";  // fonts-dejavu-core; see to
 constexpr double kFontPxPerImagePx = 1.0 / 48;  // tick label font size per px of the short side
 constexpr double kMinFontPx = 10;               // smaller text is unreadable
 constexpr double kMaxFontPx = 28;
-constexpr double kTitleFontScale = 1.3;  // title font size / tick label font size
-constexpr double kMinLineWidthPx = 2;    // series lines: >= 2 px cover whole pixel rows
+constexpr double kTitleFontScale = 1.3;
+constexpr double kLineHeightPerFontPx =
+    1.2;  // a line of text with its leading  // title font size / tick label font size
+constexpr double kMinLineWidthPx = 2;  // series lines: >= 2 px cover whole pixel rows
 constexpr double kLineWidthPerImagePx = 1.0 / 320;
 constexpr double kMarkerRadiusPerLineWidth = 1.6;
 constexpr double kTickLengthPx = 5;
@@ -211,7 +213,7 @@ ChartLayout layoutWith(cairo_t* cr, const LineChart& chart, int width_px, int he
   layout.plot_bottom_px = std::round(
       height_px - (m.gap_px + x_label_band + tick_text.height + m.gap_px + kTickLengthPx));
   double top = m.gap_px;
-  if (!chart.title.empty()) top += m.title_font_px * 1.2 + m.gap_px;  // 1.2: the line height
+  if (!chart.title.empty()) top += m.title_font_px * kLineHeightPerFontPx + m.gap_px;
   // Half a label's height above the top tick, so its label is not cut off.
   layout.plot_top_px = std::round(std::max(top, tick_text.height));
   double right_margin = std::max(
