@@ -11,6 +11,8 @@ packages=(
   libcli11-dev           # the baize command line
   libgtest-dev libgmock-dev  # unit tests
   libbenchmark-dev       # micro benchmarks
+  libcairo2-dev          # charts (render/line_chart): drawing and PNG output
+  fonts-dejavu-core      # the charts' text font, DejaVu Sans
 )
 
 missing=()

@@ -5,6 +5,7 @@
 
 #include "tools/baize/bench_cushion_command.h"
 #include "tools/baize/bench_shots_command.h"
+#include "tools/baize/chart_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_command.h"
 #include "tools/baize/simulate_command.h"
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Baize: an event-based pool and snooker table simulator", "baize"};
   app.require_subcommand(1, 1);
 
+  addChartCommand(app);
   addCushionCommand(app);
   addSimulateCommand(app);
   addStressCommand(app);

@@ -1,0 +1,109 @@
+#include "tools/baize/chart_command.h"
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "render/line_chart.h"
+#include "tools/baize/cli_errors.h"
+#include "tools/baize/cushion_charts.h"
+
+namespace baize::tools {
+namespace {
+
+// A size that reads well on a screen and in the README; --width and --height change it.
+constexpr int kDefaultWidthPx = 960;
+constexpr int kDefaultHeightPx = 600;
+
+struct ChartFlags {
+  std::string input;  // the sweep directory or the bench CSV
+  std::string png_path;
+  int width_px = kDefaultWidthPx;
+  int height_px = kDefaultHeightPx;
+};
+
+// Every chart is checked before any is written, so bad data leaves no PNG behind at all.
+void writeCharts(const std::vector<NamedChart>& charts, const std::string& directory,
+                 const ChartFlags& flags) {
+  for (const NamedChart& named : charts) {
+    render::layoutChart(named.chart, flags.width_px, flags.height_px);
+  }
+  for (const NamedChart& named : charts) {
+    const std::string path = (std::filesystem::path(directory) / named.file_name).string();
+    render::writeChartPng(named.chart, path, flags.width_px, flags.height_px);
+    std::cout << "wrote " << path << '\n';
+  }
+}
+
+// Chart and size errors from render/ name the chart and the series; say which flag or file.
+// (CSV errors already name their file.)
+void withContext(const std::string& context, const std::function<void()>& body) {
+  try {
+    body();
+  } catch (const std::invalid_argument& rejected) {
+    const std::string message = rejected.what();
+    if (message.rfind("chart width", 0) == 0) throw UsageError(message + " (set by --width)");
+    if (message.rfind("chart height", 0) == 0) throw UsageError(message + " (set by --height)");
+    // Messages about a chart's data name the chart, not the file it came from.
+    if (message.rfind("chart '", 0) == 0) throw UsageError(context + ": " + message);
+    throw;
+  }
+}
+
+CLI::App* addSizeFlags(CLI::App* command, ChartFlags& flags) {
+  command->add_option("--width", flags.width_px, "image width (px)")->capture_default_str();
+  command->add_option("--height", flags.height_px, "image height (px)")->capture_default_str();
+  return command;
+}
+
+}  // namespace
+
+void addChartCommand(CLI::App& parent) {
+  CLI::App* chart = parent.add_subcommand(
+      "chart", "Draw PNG charts of the cushion sweep and bench CSV files (see docs/cushion.md)");
+  chart->require_subcommand(1, 1);
+
+  auto sweep_flags = std::make_shared<ChartFlags>();
+  CLI::App* sweep = chart->add_subcommand(
+      "sweep",
+      "From DIR/fig6.csv ... fig10.csv (baize cushion --sweep DIR) write "
+      "DIR/fig6-rebound-speed.png, "
+      "fig6-rebound-angle.png, ... fig10-slip-speed.png, fig10-slip-angle.png");
+  sweep->add_option("DIR", sweep_flags->input, "the sweep directory")->required();
+  addSizeFlags(sweep, *sweep_flags);
+  sweep->callback([sweep_flags] {
+    const ChartFlags& flags = *sweep_flags;
+    const int status = runReportingErrors("chart sweep", [&] {
+      withContext(flags.input,
+                  [&] { writeCharts(cushionSweepCharts(flags.input), flags.input, flags); });
+    });
+    if (status != 0) throw CLI::RuntimeError(status);
+  });
+
+  auto bench_flags = std::make_shared<ChartFlags>();
+  CLI::App* bench = chart->add_subcommand(
+      "bench-cushion",
+      "From a `baize bench cushion --csv` table write a log-log chart of median time per impact "
+      "against largest error, one line per solver");
+  bench->add_option("CSV", bench_flags->input, "the bench table")->required();
+  bench->add_option("--png", bench_flags->png_path, "the PNG file to write")->required();
+  addSizeFlags(bench, *bench_flags);
+  bench->callback([bench_flags] {
+    const ChartFlags& flags = *bench_flags;
+    const int status = runReportingErrors("chart bench-cushion", [&] {
+      withContext(flags.input, [&] {
+        const std::filesystem::path png(flags.png_path);
+        writeCharts({{png.filename().string(), cushionBenchChart(flags.input)}},
+                    png.parent_path().string(), flags);
+      });
+    });
+    if (status != 0) throw CLI::RuntimeError(status);
+  });
+}
+
+}  // namespace baize::tools
