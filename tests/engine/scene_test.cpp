@@ -165,6 +165,40 @@ TEST(ScenePhysics, RollingFrictionOverrideShortensTheRollAsTheClosedFormSays) {
   }
 }
 
+// A ball struck at its centre slides 12 v^2 / (49 mu_s g) before it rolls (physics-notes section
+// 6): a grippier cloth in the scene shortens the slide in that proportion.
+TEST(ScenePhysics, SlidingFrictionOverrideShortensTheSlideAsTheClosedFormSays) {
+  for (double mu_s : {0.2, 0.3}) {
+    nlohmann::json doc = lonePoolBall(-1.0, 0.5, {{"cloth", {{"sliding_friction", mu_s}}}});
+    doc["shot"]["height"] = 0;
+    const Scene scene = sceneFromJson(doc, "test.json");
+    const SceneRun run = runScene(scene);
+    const double v0 = run.strike.ball.v.x(), g = simulationParamsFor(scene).cloth.gravity_mps2;
+    const Event& rolls = firstEventOf(run.result, EventKind::StateChange);
+    EXPECT_NEAR(rolls.after[0].position.x() - (-1.0), 12 * v0 * v0 / (49 * mu_s * g),
+                kClosedFormDistance_m)
+        << "mu_s " << mu_s;
+    EXPECT_NEAR(rolls.after[0].velocity.x(), 5.0 / 7 * v0, kClosedFormRelative * v0);
+  }
+}
+
+// The seed model's restitution in the scene: a head-on rolling ball comes back slower with a
+// lower e_e (the rebound's normal speed grows with e_e at fixed friction).
+TEST(ScenePhysics, LowerCushionRestitutionGivesASlowerRebound) {
+  double previous_rebound_mps = 0;
+  for (double e_e : {0.98, 0.7}) {
+    const SceneRun run = runScene(
+        sceneFromJson(lonePoolBall(0.6, 0.8, {{"cushion", {{"restitution", e_e}}}}), "test.json"));
+    const Event& hit = firstEventOf(run.result, EventKind::Cushion);
+    const double rebound_mps = -hit.after[0].velocity.x();
+    EXPECT_GT(rebound_mps, 0) << "e_e " << e_e;
+    if (previous_rebound_mps > 0) {
+      EXPECT_LT(rebound_mps, previous_rebound_mps);
+    }
+    previous_rebound_mps = rebound_mps;
+  }
+}
+
 // The simple cushion rule chosen in the scene: a rolling ball meeting the foot cushion head-on
 // comes straight back at e times its incoming speed.
 TEST(ScenePhysics, SimpleCushionModelReboundsHeadOnAtETimesTheIncomingSpeed) {
