@@ -15,6 +15,7 @@ namespace {
 // The paper scheme's step count is an integer in [1, kMaxPaperSteps]: 1e7 increments already take
 // about a second per impact, so more is a typing slip, not a wish for accuracy.
 constexpr int kMaxPaperSteps = 10000000;
+// max_events is read as a JSON integer, which the reader holds as an int.
 constexpr int kMaxEventBudget = std::numeric_limits<int>::max();
 
 std::optional<double> number(const JsonReader& object, const char* key) {
