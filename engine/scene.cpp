@@ -38,7 +38,7 @@ void placeOrMove(std::vector<PlacedBall>* balls, const std::string& id, const Ei
 
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   const JsonReader scene(document, source);
-  scene.requireKeys({"table", "ball_set", "shot"}, {"rack", "balls"});
+  scene.requireKeys({"table", "ball_set", "shot"}, {"rack", "balls", "physics"});
   Scene result;
   result.source = source;
   const std::string table = scene.text("table");
@@ -113,6 +113,8 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
       shot.has("elevation_deg") ? shot.nonNegativeNumber("elevation_deg") * M_PI / 180 : 0;
   result.shot.side_offset = shot.has("side") ? shot.finiteNumber("side") : 0;
   result.shot.height_offset = shot.has("height") ? shot.finiteNumber("height") : 0;
+  if (scene.has("physics")) result.overrides = readPhysicsOverrides(scene.object("physics"));
+  validateScenePhysics(simulationParamsFor(result), cueStrikeParamsFor(result), source);
   try {
     physics::validateCueShot(result.shot);
   } catch (const std::invalid_argument& e) {
@@ -160,17 +162,23 @@ SimulationParams simulationParamsFor(const Scene& scene) {
   p.cushion.cloth_friction = p.cloth.sliding_friction;
   p.ball_ball.radius_m = scene.ball_set.radius_m;
   p.ball_ball.mass1_kg = p.ball_ball.mass2_kg = scene.ball_set.mass_kg;
+  applyPhysicsOverrides(scene.overrides, &p);
   return p;
+}
+
+physics::CueStrikeParams cueStrikeParamsFor(const Scene& scene) {
+  physics::CueStrikeParams cue;
+  cue.ball_mass_kg = scene.ball_set.mass_kg;
+  cue.ball_radius_m = scene.ball_set.radius_m;
+  applyPhysicsOverrides(scene.overrides, &cue);
+  return cue;
 }
 
 SceneRun runScene(const Scene& scene, bool record_trajectories) {
   SimulationParams params = simulationParamsFor(scene);
   params.record_trajectories = record_trajectories;
-  physics::CueStrikeParams cue;
-  cue.ball_mass_kg = scene.ball_set.mass_kg;
-  cue.ball_radius_m = scene.ball_set.radius_m;
   SceneRun run;
-  run.strike = physics::strikeCueBall(cue, scene.shot);
+  run.strike = physics::strikeCueBall(cueStrikeParamsFor(scene), scene.shot);
   std::vector<physics::BallState> balls;
   for (const PlacedBall& b : scene.balls) {
     physics::BallState state;

@@ -7,6 +7,7 @@
 
 #include "engine/ball_set.h"
 #include "engine/rack.h"
+#include "engine/scene_physics.h"
 #include "engine/shot_simulator.h"
 #include "engine/table.h"
 #include "physics/cue_strike.h"
@@ -20,17 +21,22 @@ struct Scene {
   std::vector<PlacedBall> balls;  // the cue ball first
   std::string cue_ball;           // the ball the cue strikes
   physics::CueShot shot;          // heading already resolved from an aim at a ball
+  PhysicsOverrides overrides;     // the file's "physics" object; empty: the defaults
 };
 
 // Reads a scene file. Throws std::invalid_argument naming the file, the key and the value for an
 // unknown key, a missing one, a wrong type, an unknown table, ball set, rack or ball, overlapping
-// balls, a ball off the table or an impossible shot.
+// balls, a ball off the table, an impossible shot or a physics override out of its range.
 Scene loadScene(const std::string& path);
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source);
 
 // The physics of the scene's table and balls: pool or snooker cloth, the table's cushion height,
-// the ball set's radius and mass.
+// the ball set's radius and mass, then the scene's overrides.
 SimulationParams simulationParamsFor(const Scene& scene);
+
+// The cue: physics::CueStrikeParams defaults with the ball set's radius and mass, then the scene's
+// overrides (a squirt end mass turns squirt on).
+physics::CueStrikeParams cueStrikeParamsFor(const Scene& scene);
 
 struct SceneRun {
   physics::CueStrikeResult strike;

@@ -208,6 +208,7 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
   physics::validateClothParams(p.cloth);
   physics::validateCushionParams(p.cushion);
   physics::validateBallBallParams(p.ball_ball);
+  validateCushionContactParams(p);
   const double R = p.cushion.radius_m;
   if (p.cloth.radius_m != R || p.ball_ball.radius_m != R) {
     physics::rejectValue("ball radius of the cloth and ball-ball parameters (m)", p.cloth.radius_m,
@@ -645,8 +646,8 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         break;
       case EventKind::Cushion:
       case EventKind::Jaw: {
-        // The seed model in the frame of the contact normal: a straight cushion's, or the direction
-        // from a jaw's centre to the ball.
+        // The chosen cushion model (engine/cushion_contact.h) in the frame of the contact normal: a
+        // straight cushion's, or the direction from a jaw's centre to the ball.
         const Eigen::Vector2d normal =
             best.kind == EventKind::Cushion
                 ? table.cushions[best.index].inward_normal
@@ -656,8 +657,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         const bool pressed = path_a.quadratic_mps2.dot(normal) < 0;
         if (local.v.y() > 0 || pressed) {
           physics::BallVelocity after = local;
-          if (local.v.y() > 0)
-            after = physics::solveCushionImpactExact(p.cushion, local, p.cushion_solver).after;
+          if (local.v.y() > 0) after = resolveCushionContact(p, local);
           // In the cushion's frame the normal into the table is -y.
           if (pressed)
             releasePressedContact(p.cushion, physics::kineticEnergy(p.cushion, local),

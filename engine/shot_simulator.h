@@ -11,11 +11,13 @@
 #include <string>
 #include <vector>
 
+#include "engine/cushion_contact.h"
 #include "engine/table.h"
 #include "physics/ball_ball_impact.h"
 #include "physics/cloth_motion.h"
 #include "physics/cushion_exact_solver.h"
 #include "physics/cushion_model.h"
+#include "physics/cushion_simple_model.h"
 
 namespace baize::engine {
 
@@ -42,7 +44,12 @@ TableGeometry rectangularTable(double length_m, double width_m);
 struct SimulationParams {
   physics::ClothParams cloth = physics::poolCloth();
   physics::CushionParams cushion;  // the seed model; mass, radius and nose height of the balls
+  // The model every cushion and jaw hit goes through (engine/cushion_contact.h), and the options of
+  // each: the exact solver's, the paper scheme's step count N, the simple rule's restitution.
+  CushionModelChoice cushion_model = CushionModelChoice::SeedExact;
   physics::ExactSolverOptions cushion_solver;
+  int cushion_paper_steps = 5000;  // N, as in the paper
+  physics::SimpleCushionParams cushion_simple;
   physics::BallBallParams ball_ball;
   long max_events = 100000;          // a shot needing more stops with an error saying so
   bool record_trajectories = false;  // fill SimulationResult::trajectories (costs memory only)

@@ -122,6 +122,252 @@ TEST(Scene, BadScenesAreRejectedNamingTheKeyAndValue) {
   EXPECT_THROW(loadScene("/nonexistent/scene.json"), std::invalid_argument);
 }
 
+// A lone cue ball at [x, 0] struck along +x at its natural-roll height (0.4 R above the centre,
+// level cue), so it rolls from the start; `physics` is the scene's "physics" object, if any.
+nlohmann::json lonePoolBall(double x, double speed_mps, const nlohmann::json& physics = nullptr) {
+  nlohmann::json doc = {{"table", "pool-9ft"},
+                        {"ball_set", "pool"},
+                        {"balls", {{"cue", {x, 0.0}}}},
+                        {"shot", {{"heading_deg", 0}, {"speed_mps", speed_mps}, {"height", 0.4}}}};
+  if (!physics.is_null()) doc["physics"] = physics;
+  return doc;
+}
+
+const Event& firstEventOf(const SimulationResult& result, EventKind kind) {
+  const auto found = std::find_if(result.events.begin(), result.events.end(),
+                                  [&](const Event& e) { return e.kind == kind; });
+  if (found == result.events.end()) throw std::logic_error("no such event");
+  return *found;
+}
+
+// Closed-form roll lengths through the whole engine: rounding of positions of order 1 m, and a
+// slip of a few ulp left by the strike that ends within femtoseconds (m).
+constexpr double kClosedFormDistance_m = 1e-9;
+// Velocities through a frame rotation there and back and one multiplication: rounding, relative.
+constexpr double kClosedFormRelative = 1e-12;
+// Angles from an atan of the strike's components: rounding (rad).
+constexpr double kAngleRoundoff_rad = 1e-12;
+
+// A rolling ball stops after v^2 / (2 mu_r g): doubling mu_r in the scene halves the roll.
+TEST(ScenePhysics, RollingFrictionOverrideShortensTheRollAsTheClosedFormSays) {
+  double previous_roll_m = 0;
+  for (double mu_r : {0.01, 0.02}) {
+    const nlohmann::json physics = {{"cloth", {{"rolling_friction", mu_r}}}};
+    const Scene scene = sceneFromJson(lonePoolBall(-1.0, 0.3, physics), "test.json");
+    ASSERT_EQ(simulationParamsFor(scene).cloth.rolling_friction, mu_r);
+    const SceneRun run = runScene(scene);
+    const double v0 = run.strike.ball.v.norm(), g = simulationParamsFor(scene).cloth.gravity_mps2;
+    const double roll_m = run.result.final_balls[0].state.position.x() - (-1.0);
+    EXPECT_NEAR(roll_m, v0 * v0 / (2 * mu_r * g), kClosedFormDistance_m) << "mu_r " << mu_r;
+    if (previous_roll_m > 0) {
+      EXPECT_NEAR(roll_m, previous_roll_m / 2, kClosedFormDistance_m);
+    }
+    previous_roll_m = roll_m;
+  }
+}
+
+// A ball struck at its centre slides 12 v^2 / (49 mu_s g) before it rolls (physics-notes section
+// 6): a grippier cloth in the scene shortens the slide in that proportion.
+TEST(ScenePhysics, SlidingFrictionOverrideShortensTheSlideAsTheClosedFormSays) {
+  for (double mu_s : {0.2, 0.3}) {
+    nlohmann::json doc = lonePoolBall(-1.0, 0.5, {{"cloth", {{"sliding_friction", mu_s}}}});
+    doc["shot"]["height"] = 0;
+    const Scene scene = sceneFromJson(doc, "test.json");
+    const SceneRun run = runScene(scene);
+    const double v0 = run.strike.ball.v.x(), g = simulationParamsFor(scene).cloth.gravity_mps2;
+    const Event& rolls = firstEventOf(run.result, EventKind::StateChange);
+    EXPECT_NEAR(rolls.after[0].position.x() - (-1.0), 12 * v0 * v0 / (49 * mu_s * g),
+                kClosedFormDistance_m)
+        << "mu_s " << mu_s;
+    EXPECT_NEAR(rolls.after[0].velocity.x(), 5.0 / 7 * v0, kClosedFormRelative * v0);
+  }
+}
+
+// The seed model's restitution in the scene: a head-on rolling ball comes back slower with a
+// lower e_e (the rebound's normal speed grows with e_e at fixed friction).
+TEST(ScenePhysics, LowerCushionRestitutionGivesASlowerRebound) {
+  double previous_rebound_mps = 0;
+  for (double e_e : {0.98, 0.7}) {
+    const SceneRun run = runScene(
+        sceneFromJson(lonePoolBall(0.6, 0.8, {{"cushion", {{"restitution", e_e}}}}), "test.json"));
+    const Event& hit = firstEventOf(run.result, EventKind::Cushion);
+    const double rebound_mps = -hit.after[0].velocity.x();
+    EXPECT_GT(rebound_mps, 0) << "e_e " << e_e;
+    if (previous_rebound_mps > 0) {
+      EXPECT_LT(rebound_mps, previous_rebound_mps);
+    }
+    previous_rebound_mps = rebound_mps;
+  }
+}
+
+// The simple cushion rule chosen in the scene: a rolling ball meeting the foot cushion head-on
+// comes straight back at e times its incoming speed.
+TEST(ScenePhysics, SimpleCushionModelReboundsHeadOnAtETimesTheIncomingSpeed) {
+  const nlohmann::json physics = {{"cushion", {{"model", "simple"}, {"simple_restitution", 0.6}}}};
+  const SceneRun run = runScene(sceneFromJson(lonePoolBall(0.6, 0.8, physics), "test.json"));
+  const Event& hit = firstEventOf(run.result, EventKind::Cushion);
+  const double V = hit.before[0].velocity.x();
+  ASSERT_GT(V, 0);
+  EXPECT_NEAR(hit.after[0].velocity.x(), -0.6 * V, kClosedFormRelative * V);
+  EXPECT_NEAR(hit.after[0].velocity.y(), 0, kClosedFormRelative * V);
+}
+
+// The paper scheme chosen in the scene: the same hit as the exact solver's to within its
+// first-order error, at most about 2.8 V0 / N (one Euler increment; see
+// tests/engine/cushion_contact_test.cpp), taken as 4 V0 / N.
+TEST(ScenePhysics, PaperCushionModelAgreesWithTheExactSolverToItsFirstOrderError) {
+  constexpr double kPaperErrorPerStep = 4.0;
+  constexpr int kSteps = 500;
+  nlohmann::json doc = lonePoolBall(0.6, 0.8);
+  doc["shot"]["heading_deg"] = 20;
+  doc["shot"]["side"] = 0.3;
+  const SceneRun exact = runScene(sceneFromJson(doc, "test.json"));
+  doc["physics"] = {{"cushion", {{"model", "paper"}, {"paper_steps", kSteps}}}};
+  const SceneRun paper = runScene(sceneFromJson(doc, "test.json"));
+  const Event& a = firstEventOf(exact.result, EventKind::Cushion);
+  const Event& b = firstEventOf(paper.result, EventKind::Cushion);
+  ASSERT_EQ(a.before[0].velocity, b.before[0].velocity) << "the same path up to the hit";
+  const double V0 = a.before[0].velocity.norm(), R = 0.028575;
+  const double error = std::max(
+      (a.after[0].velocity - b.after[0].velocity).cwiseAbs().maxCoeff(),
+      R * (a.after[0].angular_velocity - b.after[0].angular_velocity).cwiseAbs().maxCoeff());
+  EXPECT_LE(error, kPaperErrorPerStep * V0 / kSteps);
+  EXPECT_GT(error, 0) << "the paper scheme is only first order: some difference must show";
+}
+
+// Squirt: with an end mass the ball leaves turned away from the side of the tip offset by the angle
+// of physics-notes section 4, tan(alpha) = (5/2) a sqrt(1 - a^2) / (1 + m / m_end + (5/2)(1 -
+// a^2)); without it the ball leaves along the aim.
+TEST(ScenePhysics, SquirtEndMassTurnsTheCueBallAwayFromTheOffsetSide) {
+  constexpr double kSide = 0.3, kEndMass_kg = 0.01, kBallMass_kg = 0.17;
+  nlohmann::json doc = lonePoolBall(0.0, 1.0);
+  doc["shot"]["height"] = 0;
+  doc["shot"]["side"] = kSide;  // right english
+  const SceneRun plain = runScene(sceneFromJson(doc, "test.json"));
+  EXPECT_EQ(plain.strike.ball.v.y(), 0);
+  doc["physics"] = {{"cue", {{"squirt_end_mass_kg", kEndMass_kg}}}};
+  const SceneRun squirt = runScene(sceneFromJson(doc, "test.json"));
+  const double s = 1 - kSide * kSide;
+  const double expected_rad =
+      std::atan(2.5 * kSide * std::sqrt(s) / (1 + kBallMass_kg / kEndMass_kg + 2.5 * s));
+  const Eigen::Vector3d& v = squirt.strike.ball.v;
+  EXPECT_NEAR(std::atan2(v.y(), v.x()), expected_rad, kAngleRoundoff_rad) << "left of the aim";
+  EXPECT_GT(expected_rad, 0.01) << "a squirt of about a degree, not a rounding";
+  // The engine starts the ball with that velocity: its first event sees it heading that way.
+  const Eigen::Vector3d& first = squirt.result.events.front().before[0].velocity;
+  EXPECT_NEAR(std::atan2(first.y(), first.x()), expected_rad, kAngleRoundoff_rad);
+}
+
+// The Mathavan (2014) ball-ball model chosen in the scene resolves the collisions: the first one
+// equals the model called directly on the states before it.
+TEST(ScenePhysics, BallBallModelChoiceReachesTheCollisions) {
+  nlohmann::json doc = lonePoolBall(
+      -0.5, 1.0, {{"ball_ball", {{"model", "mathavan2014"}, {"ball_friction", 0.06}}}});
+  doc["balls"]["1"] = {0.0, 0.02};
+  const Scene scene = sceneFromJson(doc, "test.json");
+  const SimulationParams p = simulationParamsFor(scene);
+  ASSERT_EQ(p.ball_ball.model, physics::BallBallModel::Mathavan2014);
+  EXPECT_EQ(p.ball_ball.cloth_friction, p.cloth.sliding_friction) << "one cloth";
+  const SceneRun run = runScene(scene);
+  const Event& hit = firstEventOf(run.result, EventKind::BallBall);
+  const physics::BallVelocity a{hit.before[0].velocity, hit.before[0].angular_velocity};
+  const physics::BallVelocity b{hit.before[1].velocity, hit.before[1].angular_velocity};
+  Eigen::Vector3d normal(hit.before[1].position.x() - hit.before[0].position.x(),
+                         hit.before[1].position.y() - hit.before[0].position.y(), 0);
+  normal.normalize();
+  const physics::BallBallImpactResult direct =
+      physics::resolveBallBallImpact(p.ball_ball, a, b, normal);
+  EXPECT_EQ(hit.after[0].velocity, direct.ball1.v);
+  EXPECT_EQ(hit.after[1].velocity, direct.ball2.v);
+}
+
+// physicsJson writes the parameters as a "physics" object: read back, it gives the same parameters.
+TEST(ScenePhysics, PhysicsEchoReadsBackToTheSameParameters) {
+  const nlohmann::json physics = {
+      {"cloth", {{"sliding_friction", 0.25}, {"spinning_friction", 0.05}}},
+      {"cushion", {{"model", "paper"}, {"paper_steps", 300}, {"friction", 0.12}}},
+      {"ball_ball", {{"friction_law", "constant"}, {"constant_friction", 0.04}}},
+      {"cue", {{"mass_kg", 0.6}, {"squirt_end_mass_kg", 0.012}}},
+      {"max_events", 5000}};
+  const Scene first = sceneFromJson(lonePoolBall(0, 1, physics), "test.json");
+  const SimulationParams p = simulationParamsFor(first);
+  const physics::CueStrikeParams cue = cueStrikeParamsFor(first);
+  EXPECT_EQ(p.cloth.sliding_friction, 0.25);
+  EXPECT_EQ(p.cushion.cloth_friction, 0.25) << "one cloth";
+  EXPECT_EQ(p.cushion_model, CushionModelChoice::SeedPaper);
+  EXPECT_EQ(p.cushion_paper_steps, 300);
+  EXPECT_EQ(p.ball_ball.constant_friction, 0.04);
+  EXPECT_EQ(cue.end_mass_kg, 0.012);
+  EXPECT_EQ(p.max_events, 5000);
+  const nlohmann::json echo = physicsJson(p, cue);
+  const Scene second = sceneFromJson(lonePoolBall(0, 1, echo), "test.json");
+  EXPECT_EQ(physicsJson(simulationParamsFor(second), cueStrikeParamsFor(second)), echo);
+  EXPECT_EQ(echo["cushion"]["model"], "paper");
+}
+
+// Every bad key is refused naming the file, the key path and the value (and what is allowed).
+TEST(ScenePhysics, BadOverridesAreRefusedNamingFileKeyAndValue) {
+  struct Case {
+    nlohmann::json physics;
+    std::vector<std::string> parts;
+  };
+  const std::vector<Case> cases = {
+      {{{"clothes", nlohmann::json::object()}}, {"test.json: physics.clothes", "unknown key"}},
+      {{{"cloth", 0.2}}, {"test.json: physics.cloth = 0.2", "JSON object"}},
+      {{{"cloth", {{"rolling_frction", 0.02}}}},
+       {"test.json: physics.cloth.rolling_frction = 0.02", "unknown key"}},
+      {{{"cloth", {{"rolling_friction", "high"}}}},
+       {"test.json: physics.cloth.rolling_friction = \"high\"", "must be a number"}},
+      {{{"cloth", {{"rolling_friction", 0.5}}}},
+       {"test.json: physics.cloth: ", "mu_r = 0.5", "is not allowed"}},
+      {{{"cloth", {{"sliding_friction", 1.5}}}},
+       {"test.json: physics.cloth: ", "mu_s = 1.5", "is not allowed"}},
+      {{{"cushion", {{"model", "rigid"}}}},
+       {"test.json: physics.cushion.model = \"rigid\"", "\"exact\", \"paper\" or \"simple\""}},
+      {{{"cushion", {{"model", "paper"}, {"paper_steps", 0}}}},
+       {"test.json: physics.cushion.paper_steps = 0", "an integer in [1, 10000000]"}},
+      {{{"cushion", {{"paper_steps", 100}}}},
+       {"test.json: physics.cushion.paper_steps = 100", "applies only to model \"paper\"",
+        "the model here is \"exact\""}},
+      {{{"cushion", {{"model", "simple"}, {"restitution", 0.9}}}},
+       {"test.json: physics.cushion.restitution = 0.9", "simple_restitution"}},
+      {{{"cushion", {{"model", "simple"}, {"simple_restitution", 1.25}}}},
+       {"test.json: physics.cushion: ", "simple cushion restitution e = 1.25", "(0, 1]"}},
+      {{{"cushion", {{"friction", 0.5}}}},
+       {"test.json: physics.cushion: ", "mu_w = 0.5", "tan(theta)"}},
+      {{{"cushion", {{"restitution", 0}}}}, {"test.json: physics.cushion: ", "e_e = 0", "(0, 1]"}},
+      {{{"cushion", {{"contact_height_m", 0.01}}}},
+       {"test.json: physics.cushion: ", "h (m) = 0.01", "strictly between"}},
+      {{{"cushion", {{"tolerance", 0.5}}}},
+       {"test.json: physics.cushion: ", "exact solver tolerance = 0.5", "[1e-14, 0.01]"}},
+      {{{"ball_ball", {{"model", "newton"}}}},
+       {"test.json: physics.ball_ball.model = \"newton\"", "\"frictional\" or \"mathavan2014\""}},
+      {{{"ball_ball", {{"restitution", 1.25}}}},
+       {"test.json: physics.ball_ball: ", "restitution e = 1.25", "[0, 1]"}},
+      {{{"ball_ball", {{"ball_friction", 0.05}}}},
+       {"test.json: physics.ball_ball.ball_friction = 0.05", "model \"mathavan2014\""}},
+      {{{"ball_ball", {{"friction_law", "constant"}, {"friction_fit_a", 0.01}}}},
+       {"test.json: physics.ball_ball.friction_fit_a = 0.01", "friction_law \"alciatore\""}},
+      {{{"ball_ball", {{"friction_law", "constant"}, {"constant_friction", 1.5}}}},
+       {"test.json: physics.ball_ball: ", "mu = 1.5", "[0, 1)"}},
+      {{{"cue", {{"squirt_end_mass_kg", -0.01}}}},
+       {"test.json: physics.cue: ", "cue end mass (kg) = -0.01", "> 0"}},
+      {{{"cue", {{"tip_restitution", 2}}}}, {"test.json: physics.cue: ", "e_tip = 2", "[0, 1]"}},
+      {{{"cue", {{"mass_kg", true}}}}, {"test.json: physics.cue.mass_kg = true", "number"}},
+      {{{"max_events", 0}}, {"test.json: physics.max_events = 0", "an integer in [1, "}},
+      {{{"max_events", 2.5}}, {"test.json: physics.max_events = 2.5", "an integer"}},
+  };
+  for (const Case& c : cases) {
+    const std::string message = sceneError(lonePoolBall(0, 1, c.physics));
+    for (const std::string& part : c.parts) {
+      EXPECT_THAT(message, HasSubstr(part)) << "physics " << c.physics.dump();
+    }
+  }
+  nlohmann::json not_an_object = lonePoolBall(0, 1);
+  not_an_object["physics"] = "fast";
+  EXPECT_THAT(sceneError(not_an_object), HasSubstr("test.json: physics = \"fast\""));
+}
+
 }  // namespace
 }  // namespace baize::engine
 

@@ -32,6 +32,28 @@ for pieces in d["trajectories"].values():
     starts = [q["start_time_s"] for q in pieces]
     assert starts[0] == 0 and starts == sorted(starts), starts
 assert d["trajectories"]["cue"][0]["velocity_mps"][0] > 5, "struck at break speed"
+# The physics echo: the defaults of a pool table, in the scene format's keys.
+p = d["physics"]
+assert p["cushion"]["model"] == "exact" and p["ball_ball"]["model"] == "frictional", p
+assert p["cloth"]["rolling_friction"] == 0.01 and "squirt_end_mass_kg" not in p["cue"], p
+PY
+grep -q "^models: cushion exact, ball-ball frictional$" <<<"$out" || fail "models line: $out"
+
+# A scene choosing other models: the summary and the echo say so.
+cat >"$work/simple.json" <<'JSON'
+{"table": "pool-9ft", "ball_set": "pool", "balls": {"cue": [0.6, 0]},
+ "shot": {"heading_deg": 0, "speed_mps": 0.8, "side": 0.2},
+ "physics": {"cushion": {"model": "simple", "simple_restitution": 0.6},
+             "cue": {"squirt_end_mass_kg": 0.01}}}
+JSON
+out=$("$baize" simulate "$work/simple.json" --json "$work/simple-out.json") ||
+  fail "simple-cushion scene exited $?"
+grep -q "^models: cushion simple, ball-ball frictional, squirt$" <<<"$out" || fail "models: $out"
+python3 - "$work/simple-out.json" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))["physics"]
+assert p["cushion"] == {"model": "simple", "simple_restitution": 0.6}, p["cushion"]
+assert p["cue"]["squirt_end_mass_kg"] == 0.01, p["cue"]
 PY
 [[ -f "$work/break.json.tmp" ]] && fail "a temporary file was left behind"
 

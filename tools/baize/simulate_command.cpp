@@ -61,6 +61,11 @@ void runSimulate(const SimulateFlags& flags) {
             << run.ball_ids.size() << " balls)\n";
   std::cout << "strike: cue ball '" << scene.cue_ball << "' at " << run.strike.ball.v.norm()
             << " m/s\n";
+  const nlohmann::json physics =
+      engine::physicsJson(engine::simulationParamsFor(scene), engine::cueStrikeParamsFor(scene));
+  std::cout << "models: cushion " << physics["cushion"]["model"].get<std::string>()
+            << ", ball-ball " << physics["ball_ball"]["model"].get<std::string>()
+            << (physics["cue"].contains("squirt_end_mass_kg") ? ", squirt\n" : "\n");
   std::cout << "first ball hit: " << first_hit << "\n";
   std::cout << "pocketed:";
   for (const std::string& b : pocketed) std::cout << ' ' << b;
@@ -84,6 +89,7 @@ void runSimulate(const SimulateFlags& flags) {
     out["end_time_s"] = r.end_time_s;
     out["first_ball_hit"] = first_hit;
     out["pocketed"] = pocketed;
+    out["physics"] = physics;  // the parameters the shot ran with, in the scene format's keys
     for (const engine::Event& e : r.events) {
       nlohmann::json event = {{"time_s", e.time_s},
                               {"type", engine::eventKindName(e.kind)},
