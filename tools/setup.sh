@@ -11,6 +11,7 @@ packages=(
   libcli11-dev           # the baize command line
   libgtest-dev libgmock-dev  # unit tests
   libbenchmark-dev       # micro benchmarks
+  libbox2d-dev           # the Box2D 2.4.1 baseline of baize bench accuracy
 )
 
 missing=()
