@@ -1,9 +1,11 @@
 #include "engine/fixed_step_simulator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "physics/value_text.h"
 
@@ -119,7 +121,11 @@ class FixedStepper {
     return -(a.velocity.x() * n.x() + a.velocity.y() * n.y());
   }
 
+  // The contacts of every ball that moved (only those can have reached something new).
   void findContacts();
+  // Adds ball i's touching contacts with cushions, jaws and balls not yet scanned.
+  void addContactsOf(int i);
+  void sortContacts();
   void resolve(const Contact& c);
   void pushOut();
   void record(Event event) {
@@ -138,7 +144,8 @@ class FixedStepper {
   const FixedStepObserver& observer_;
   double now_ = 0;
   std::vector<BallRecord> balls_;
-  std::vector<char> active_;  // moving, or pushed in the last step: may touch something new
+  std::vector<char> active_;   // moving, or pushed in the last step: may touch something new
+  std::vector<char> scanned_;  // ball's contacts are in contacts_
   std::vector<Contact> contacts_;
   SimulationResult result_;
 };
@@ -146,28 +153,43 @@ class FixedStepper {
 void FixedStepper::findContacts() {
   contacts_.clear();
   const int n = static_cast<int>(balls_.size());
+  scanned_.assign(n, 0);
+  for (int i = 0; i < n; ++i)
+    if (active_[i] && !balls_[i].pocketed) addContactsOf(i);
+  sortContacts();
+}
+
+void FixedStepper::addContactsOf(int i) {
+  const int n = static_cast<int>(balls_.size());
   const double touching_m = 2 * R_ + kContactSlack_m;
-  for (int i = 0; i < n; ++i) {
-    if (balls_[i].pocketed) continue;
-    const Eigen::Vector2d& q = balls_[i].state.position;
-    for (int j = i + 1; j < n; ++j) {
-      if (balls_[j].pocketed || (!active_[i] && !active_[j])) continue;
-      if ((balls_[j].state.position - q).squaredNorm() <= touching_m * touching_m)
-        contacts_.push_back({EventKind::BallBall, i, j});
-    }
-    if (!active_[i]) continue;  // a ball that did not move cannot have reached a cushion
-    for (int k = 0; k < static_cast<int>(table_.cushions.size()); ++k) {
-      const CushionSegment& s = table_.cushions[k];
-      if (R_ - s.inward_normal.dot(q - s.start_m) >= -kContactSlack_m && besideSegment(s, q))
-        contacts_.push_back({EventKind::Cushion, i, -1, k});
-    }
-    for (int k = 0; k < static_cast<int>(table_.jaws.size()); ++k) {
-      const JawArc& jaw = table_.jaws[k];
-      const double reach_m = jaw.radius_m + R_ + kContactSlack_m;
-      if ((q - jaw.centre_m).squaredNorm() <= reach_m * reach_m && withinJawRange(jaw, q))
-        contacts_.push_back({EventKind::Jaw, i, -1, k});
-    }
+  const Eigen::Vector2d& q = balls_[i].state.position;
+  // Pairs with an already scanned ball are in the list from that ball's scan.
+  for (int j = 0; j < n; ++j) {
+    if (j == i || balls_[j].pocketed || scanned_[j]) continue;
+    if ((balls_[j].state.position - q).squaredNorm() <= touching_m * touching_m)
+      contacts_.push_back({EventKind::BallBall, std::min(i, j), std::max(i, j)});
   }
+  for (int k = 0; k < static_cast<int>(table_.cushions.size()); ++k) {
+    const CushionSegment& s = table_.cushions[k];
+    if (R_ - s.inward_normal.dot(q - s.start_m) >= -kContactSlack_m && besideSegment(s, q))
+      contacts_.push_back({EventKind::Cushion, i, -1, k});
+  }
+  for (int k = 0; k < static_cast<int>(table_.jaws.size()); ++k) {
+    const JawArc& jaw = table_.jaws[k];
+    const double reach_m = jaw.radius_m + R_ + kContactSlack_m;
+    if ((q - jaw.centre_m).squaredNorm() <= reach_m * reach_m && withinJawRange(jaw, q))
+      contacts_.push_back({EventKind::Jaw, i, -1, k});
+  }
+  scanned_[i] = 1;
+}
+
+void FixedStepper::sortContacts() {
+  // The event loop's order for simultaneous contacts: by kind (ball-ball, cushion, jaw), then by
+  // the balls' and the cushion's numbers.
+  std::sort(contacts_.begin(), contacts_.end(), [](const Contact& a, const Contact& b) {
+    return std::make_tuple(static_cast<int>(a.kind), a.ball, a.other, a.index) <
+           std::make_tuple(static_cast<int>(b.kind), b.ball, b.other, b.index);
+  });
 }
 
 void FixedStepper::resolve(const Contact& c) {
@@ -279,22 +301,35 @@ SimulationResult FixedStepper::run(const std::vector<BallState>& input) {
     }
     findContacts();
     // Earliest-begun approaching contact first (the largest overlap per approach speed), so the
-    // order of resolutions follows the order in which the contacts would have begun.
-    const std::size_t max_resolutions = kResolutionsPerContact * contacts_.size();
-    for (std::size_t r = 0; r < max_resolutions; ++r) {
+    // order of resolutions follows the order in which the contacts would have begun. Contacts that
+    // only touch (within the slack) began now: they tie, and the tie goes to the first in the
+    // event loop's order (the list is sorted so), as a frozen rack is resolved there.
+    for (std::size_t r = 0; r < kResolutionsPerContact * contacts_.size(); ++r) {
       const Contact* earliest = nullptr;
       double earliest_lateness_s = -std::numeric_limits<double>::infinity();
       for (const Contact& c : contacts_) {
         const double speed = approach(c);
         if (!(speed > 0)) continue;
-        const double lateness_s = depth(c) / speed;
+        const double overlap_m = depth(c);
+        const double lateness_s = (overlap_m > kContactSlack_m ? overlap_m : 0.0) / speed;
         if (lateness_s > earliest_lateness_s) {
           earliest_lateness_s = lateness_s;
           earliest = &c;
         }
       }
       if (earliest == nullptr) break;
-      resolve(*earliest);
+      const Contact resolved = *earliest;
+      resolve(resolved);
+      // A ball set moving by this impulse (a frozen rack's next ball) may touch balls and
+      // cushions that are not in the list yet: at the same instant, as in the event loop.
+      bool added = false;
+      for (int b : {resolved.ball, resolved.other}) {
+        if (b >= 0 && !scanned_[b]) {
+          addContactsOf(b);
+          added = true;
+        }
+      }
+      if (added) sortContacts();
     }
     // Only balls that moved, were hit or were pushed can touch something new in the next step.
     for (int i = 0; i < n; ++i)
