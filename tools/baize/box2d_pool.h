@@ -7,26 +7,31 @@
 // - Balls are circles (radius R, mass m, moment of inertia (2/5) m R^2 about z, the solid ball's).
 //   Box2D's rotation is the spin about z; the spin about the horizontal axes (topspin, draw) is
 //   kept beside Box2D per ball, since a 2D engine has no such axes.
-// - Cloth: before every step each ball's velocity and horizontal spin change by the cloth model of
-//   physics/cloth_motion.h integrated over the step (sliding friction mu_s m g against the contact
-//   slip, with the slip's end located within the step and the rolling state set then; rolling
-//   resistance mu_r m g against the velocity, stopping exactly at rest; |w_z| falling at the spin
-//   deceleration). That is the best Box2D allows: it has no friction with a ground plane of its
-//   own (linear damping would give an exponential, not a constant, deceleration).
+// - Cloth: before every step each ball's velocity and spin are set to the cloth model's closed
+//   form over the step (physics::advance: sliding friction against the contact slip turning into
+//   rolling, rolling resistance mu_r m g, the spin about z running down); Box2D then moves the ball
+//   with that end-of-step velocity (its semi-implicit Euler: first order, a ball stops short by
+//   about v0 dt / 2). That is the best Box2D allows: it has no friction with a ground plane of its
+//   own, and linear damping would give an exponential, not a constant, deceleration.
 // - Cushions and jaws: Box2D edge chains along the cushion noses, the jaw arcs split into short
 //   edges, one-sided so a ball is pushed back to the table side. Each chain is set back by Box2D's
 //   edge skin (b2_polygonRadius) so that a ball touches it at R from the real nose. Ball-cushion
 //   contacts get Box2D restitution and Coulomb friction: the restitution is the seed cushion
 //   model's own head-on rebound ratio of a rolling ball (what a developer would tune to), the
-//   friction is the cushion model's mu_w. Box2D cannot model the nose height, the cloth friction
-//   during the impact or the topspin's effect: those are what this baseline misses.
+//   friction is the cushion model's mu_w. Box2D resolves the contact at the ball's equator; the
+//   horizontal impulse it applied is then also applied, as torque on the kept horizontal spin, at
+//   the real nose height (that is how a cushion takes topspin off). What it still misses: the
+//   friction at the nose and the cloth during the impact, which the seed model integrates, so the
+//   spin after a rebound is off (for a rolling head-on hit it takes off too much topspin).
 // - Ball-ball contacts get Newton restitution e from the ball-ball parameters and Coulomb friction
-//   at Alciatore's fitted mu for a 1 m/s slip; Box2D's friction changes only the spin about z.
+//   at Alciatore's fitted mu for a 1 m/s slip; Box2D's friction changes only the spin about z. The
+//   vertical friction of topspin or draw at the contact, which throws spin onto the object ball in
+//   the event loop's model, has no place in a 2D contact: missing.
 // - Pockets: a ball whose centre is inside a capture circle after a step is removed.
 // - Units: Box2D's tolerances are compiled in (5 mm linear slop, 1 cm edge skin at one unit per
 //   metre) and it clamps any body to 2 units of travel per step. One Box2D unit is therefore
-//   lengthUnit(dt) metres: 1 cm, or more when a 16 m/s ball would otherwise hit the travel clamp
-//   (at dt = 1/60 s one unit is 13 cm and the slop 0.7 mm). Time stays in seconds.
+//   box2dLengthUnit_m(dt) metres: 1 cm, or more when a 16 m/s ball would otherwise hit the travel
+//   clamp (at dt = 1/60 s one unit is 13 cm and the slop 0.7 mm). Time stays in seconds.
 // - restitutionThreshold is lowered to 1 mm/s (Box2D's default 1 m/s would make most pool contacts
 //   perfectly inelastic); sleeping is off (the cloth model stops balls exactly); a ball that would
 //   move more than a quarter of its radius in a step is a bullet (continuous collision against
@@ -67,8 +72,9 @@ double calibratedCushionRestitution(const engine::SimulationParams& params);
 // Jaw (index of the table's cushion or jaw whose edge was touched) and Pocket, each when a contact
 // begins while approaching, timed at the end of its step; before and after stay empty (Box2D does
 // not expose the states at the contact). final_balls: positions, velocities and spins (w_x, w_y
-// kept beside Box2D, w_z Box2D's). Throws std::invalid_argument on invalid parameters, settings or
-// balls (as engine::simulate) and std::runtime_error past kMaxBox2dShotTime_s.
+// kept beside Box2D, w_z Box2D's). Throws std::invalid_argument on invalid parameters or settings
+// or a non-finite ball state (overlap is not checked: Box2D pushes overlapping balls apart) and
+// std::runtime_error past kMaxBox2dShotTime_s.
 engine::SimulationResult simulateBox2d(const engine::SimulationParams& params,
                                        const engine::TableGeometry& table,
                                        const std::vector<physics::BallState>& balls,
