@@ -381,26 +381,28 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
   };
   recorder.balls = &balls;
   std::vector<engine::BallRecord> records(input.size());
+  // The cloth over half a step, in closed form: applied before and after each Box2D step (Strang
+  // splitting), so that Box2D moves every ball with its mid-step velocity and the cloth's effect
+  // on positions is second order in dt instead of first.
+  auto clothHalfStep = [&](Ball& ball) {
+    const BallState next = physics::advance(p.cloth, stateOf(ball), dt / 2);
+    ball.body->SetLinearVelocity(toBox(next.velocity.head<2>()));
+    ball.body->SetAngularVelocity(static_cast<float>(next.angular_velocity.z()));
+    ball.horizontal_spin_radps = next.angular_velocity.head<2>();
+    return next;
+  };
   for (long step = 0;; ++step) {
     const double now = static_cast<double>(step) * dt;
     bool moving = false;
     for (Ball& ball : balls) {
       if (ball.body == nullptr) continue;
-      const BallState s = stateOf(ball);
-      if (physics::motionState(p.cloth, s) == physics::MotionState::Stationary) {
+      if (physics::motionState(p.cloth, stateOf(ball)) == physics::MotionState::Stationary) {
         // Exactly at rest: Box2D's float state may carry a rounding of the cloth's zero.
         ball.body->SetLinearVelocity(b2Vec2(0, 0));
         ball.body->SetAngularVelocity(0);
         continue;
       }
       moving = true;
-      // The cloth over the coming step: the closed form's end velocities, which Box2D then
-      // integrates (semi-implicit Euler) along with the contacts.
-      const BallState next = physics::advance(p.cloth, s, dt);
-      ball.body->SetLinearVelocity(toBox(next.velocity.head<2>()));
-      ball.body->SetAngularVelocity(static_cast<float>(next.angular_velocity.z()));
-      ball.horizontal_spin_radps = next.angular_velocity.head<2>();
-      ball.body->SetBullet(next.velocity.norm() * dt > kBulletTravelPerRadius * R);
     }
     if (!moving || now >= settings.stop_after_s) {
       for (std::size_t i = 0; i < balls.size(); ++i)
@@ -412,11 +414,16 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
       throw std::runtime_error("the Box2D shot is still moving after " +
                                physics::valueText(kMaxBox2dShotTime_s) + " s");
     }
+    for (Ball& ball : balls) {
+      if (ball.body == nullptr) continue;
+      const BallState mid = clothHalfStep(ball);
+      ball.body->SetBullet(mid.velocity.norm() * dt > kBulletTravelPerRadius * R);
+    }
     recorder.now_s = now + dt;
     world.Step(static_cast<float>(dt), settings.velocity_iterations, settings.position_iterations);
     for (std::size_t i = 0; i < balls.size(); ++i) {
       if (balls[i].body == nullptr) continue;
-      const BallState s = stateOf(balls[i]);
+      const BallState s = clothHalfStep(balls[i]);
       for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
         const engine::Circle& pocket = table.pockets[k];
         if ((s.position - pocket.centre_m).squaredNorm() < pocket.radius_m * pocket.radius_m) {

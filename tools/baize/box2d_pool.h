@@ -7,12 +7,13 @@
 // - Balls are circles (radius R, mass m, moment of inertia (2/5) m R^2 about z, the solid ball's).
 //   Box2D's rotation is the spin about z; the spin about the horizontal axes (topspin, draw) is
 //   kept beside Box2D per ball, since a 2D engine has no such axes.
-// - Cloth: before every step each ball's velocity and spin are set to the cloth model's closed
-//   form over the step (physics::advance: sliding friction against the contact slip turning into
-//   rolling, rolling resistance mu_r m g, the spin about z running down); Box2D then moves the ball
-//   with that end-of-step velocity (its semi-implicit Euler: first order, a ball stops short by
-//   about v0 dt / 2). That is the best Box2D allows: it has no friction with a ground plane of its
-//   own, and linear damping would give an exponential, not a constant, deceleration.
+// - Cloth: for half a step before and half a step after every Box2D step, each ball's velocity
+//   and spin follow the cloth model's closed form (physics::advance: sliding friction against the
+//   contact slip turning into rolling, rolling resistance mu_r m g, the spin about z running
+//   down), so Box2D moves the ball with its mid-step velocity (Strang splitting; the cloth's effect
+//   on positions is then second order in dt). That is the best Box2D allows: it has no friction
+//   with a ground plane of its own, and linear damping would give an exponential, not a constant,
+//   deceleration.
 // - Cushions and jaws: Box2D edge chains along the cushion noses, the jaw arcs split into short
 //   edges, one-sided so a ball is pushed back to the table side. Each chain is set back by Box2D's
 //   edge skin (b2_polygonRadius) so that a ball touches it at R from the real nose. Ball-cushion

@@ -11,8 +11,9 @@ namespace {
 
 using physics::BallState;
 
-// Box2D moves positions by semi-implicit Euler with the step's end velocity, so a ball decelerating
-// at a stops short by about v0 dt / 2 of the exact distance; the tolerance takes a whole v0 dt.
+// The cloth acts in half steps around each Box2D step, so Box2D moves a ball with its mid-step
+// velocity: exact under constant deceleration, except in a step where the state changes (sliding
+// to rolling, rolling to rest), which is off by at most about v dt. The tolerance takes v0 dt.
 constexpr double kTimeStep_s = 1e-3;
 
 // Box2D keeps positions in float: each step's x += v dt may round by half a float ulp of the
