@@ -132,6 +132,29 @@ TEST(Box2dPool, BallRolledIntoACornerPocketFallsIn) {
   EXPECT_TRUE(r.final_balls[0].pocketed);
 }
 
+// Same input, same output: the 9-ball rack broken twice ends bit for bit the same.
+TEST(Box2dPool, SameInputGivesTheSameOutput) {
+  const engine::Table table = engine::builtinTable("pool-9ft");
+  const engine::SimulationParams p = engine::poolSimulationParams();
+  const double R = p.cushion.radius_m;
+  std::vector<BallState> balls = {rollingBall(-0.6, 0.01, 3.0, 0, R)};
+  for (int row = 0; row < 3; ++row)  // a small triangle, 1 mm apart
+    for (int k = 0; k <= row; ++k)
+      balls.push_back(rollingBall(0.4 + row * (2 * R + 1e-3) * std::sqrt(3.0) / 2,
+                                  (k - row / 2.0) * (2 * R + 1e-3), 0, 0, R));
+  const engine::SimulationResult a =
+      simulateBox2d(p, engine::geometryOf(table), balls, settingsWithStep(kTimeStep_s));
+  const engine::SimulationResult b =
+      simulateBox2d(p, engine::geometryOf(table), balls, settingsWithStep(kTimeStep_s));
+  ASSERT_EQ(a.events.size(), b.events.size());
+  EXPECT_GT(a.events.size(), 3u);
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    EXPECT_EQ(a.final_balls[i].pocketed, b.final_balls[i].pocketed);
+    EXPECT_EQ(a.final_balls[i].state.position.x(), b.final_balls[i].state.position.x());
+    EXPECT_EQ(a.final_balls[i].state.position.y(), b.final_balls[i].state.position.y());
+  }
+}
+
 TEST(Box2dPool, RejectsBadSettings) {
   const engine::SimulationParams p = engine::poolSimulationParams();
   BallState b;
