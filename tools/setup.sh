@@ -13,6 +13,7 @@ packages=(
   libbenchmark-dev       # micro benchmarks
   libcairo2-dev          # charts (render/line_chart): drawing and PNG output
   fonts-dejavu-core      # the charts' text font, DejaVu Sans
+  libbox2d-dev           # the Box2D 2.4.1 baseline of baize bench accuracy
 )
 
 missing=()

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "tools/baize/bench_accuracy_command.h"
 #include "tools/baize/bench_cushion_command.h"
 #include "tools/baize/bench_shots_command.h"
 #include "tools/baize/chart_command.h"
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   bench->require_subcommand(1, 1);
   addBenchCushionCommand(*bench);
   addBenchShotsCommand(*bench);
+  addBenchAccuracyCommand(*bench);
 
   try {
     app.parse(argc, argv);

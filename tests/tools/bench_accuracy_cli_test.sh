@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# baize bench accuracy on a tiny configuration (the first two shots of the set, one timed run):
+# the CSV has the documented columns and every configuration, the event loop scores 0 against
+# itself, and the fixed-step integrator's error falls as its step shrinks.
+# Usage: bench_accuracy_cli_test.sh path/to/baize
+set -euo pipefail
+baize=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+out=$("$baize" bench accuracy --shots 2 --repeats 1 --csv "$work/accuracy.csv") ||
+  fail "bench accuracy exited $?"
+grep -q "^2 shots" <<<"$out" || fail "no shot count in: $out"
+grep -q "wrote $work/accuracy.csv" <<<"$out" || fail "no 'wrote' line in: $out"
+[[ -f "$work/accuracy.csv.tmp" ]] && fail "a temporary file was left behind"
+
+python3 - "$work/accuracy.csv" <<'PY'
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert rows and list(rows[0].keys()) == [
+    "engine", "setting", "median_us", "position_error_m", "outcome_mismatch"], rows[0].keys()
+configs = [(r["engine"], r["setting"]) for r in rows]
+assert configs == [("event", "exact"),
+                   ("fixed-step", "dt=10ms"), ("fixed-step", "dt=1ms"),
+                   ("fixed-step", "dt=100us"), ("fixed-step", "dt=10us"),
+                   ("box2d", "dt=1/60s"), ("box2d", "dt=1/240s"), ("box2d", "dt=1ms"),
+                   ("box2d", "dt=100us")], configs
+for r in rows:
+    t, e, m = float(r["median_us"]), float(r["position_error_m"]), float(r["outcome_mismatch"])
+    assert t > 0 and math.isfinite(t), r
+    assert e >= 0 and math.isfinite(e), r
+    assert 0 <= m <= 1, r
+event = rows[0]
+assert float(event["position_error_m"]) == 0 and float(event["outcome_mismatch"]) == 0, event
+fixed = [float(r["position_error_m"]) for r in rows if r["engine"] == "fixed-step"]
+# Each tenfold smaller step must cut the error (first order: about tenfold).
+for coarse, fine in zip(fixed, fixed[1:]):
+    assert fine < coarse, fixed
+assert fixed[0] > 10 * fixed[2], fixed
+PY
+
+# Bad flags: exit 2 with the flag named; nothing written.
+set +e
+msg=$("$baize" bench accuracy --repeats 0 --csv "$work/never.csv" 2>&1 >/dev/null); status=$?
+set -e
+[[ $status -eq 2 ]] || fail "--repeats 0 exited $status, expected 2"
+grep -q -- "--repeats" <<<"$msg" || fail "message does not name --repeats: $msg"
+[[ -e "$work/never.csv" ]] && fail "CSV written for a bad flag"
+echo "bench accuracy CLI: ok"
