@@ -19,6 +19,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Balls may start this much closer than touching (m) and still count as touching: positions written
 // in a scene file or placed by a rack round to about this.
 constexpr double kContactSlack_m = 1e-9;
+// Boxes and distance bounds are widened by this, m, so that rounding in the path's extremes cannot
+// drop a contact (positions are ~1 m, rounded to ~1e-16 m; contacts are located to ~1e-14 m).
+constexpr double kBoxMargin_m = 1e-9;
 // Sustained contact: a ball pressed into another ball or a cushion by cloth friction (spin driving
 // it on, or the ball ahead slowing faster) makes a Zeno sequence of ever smaller bounces that the
 // cloth damps out, ending in a contact that lasts. The event loop keeps such a contact as a steady
@@ -69,24 +72,43 @@ PolynomialCoefficients squaredGap(const physics::PositionQuadratic& path,
 // roundoffs of the magnitudes it was computed from (a handful of operations, with room).
 constexpr double kQuadraticBoundRoundoffs = 16;
 
+// The lowest value of c0 + c1 t + c2 t^2 on [0, T] (T finite), and the size of the terms it came
+// from (for its rounding).
+struct LowestValue {
+  double value, magnitude;
+};
+LowestValue quadraticLowestValue(double c0, double c1, double c2, double horizon) {
+  const double vertex = c2 > 0 ? -c1 / (2 * c2) : -1;  // where a convex quadratic is lowest
+  if (vertex > 0 && vertex < horizon) {
+    const double drop = c1 * c1 / (4 * c2);
+    return {c0 - drop, std::abs(c0) + drop};
+  }
+  return {std::min(c0, c0 + (c1 + c2 * horizon) * horizon),
+          std::abs(c0) + (std::abs(c1) + std::abs(c2) * horizon) * horizon};
+}
+
+// Whether a point moving as c + l t + q t^2 relative to a centre stays farther than `distance`
+// from it over [0, horizon]: its distance is at least its projection on the starting direction,
+// a quadratic whose lowest value is exact. (Balls moving apart or passing wide, a ball heading away
+// from a pocket: no quartic to solve.)
+bool staysFarther(const Eigen::Vector2d& c, const Eigen::Vector2d& l, const Eigen::Vector2d& q,
+                  double distance, double horizon) {
+  const double start = c.norm();
+  if (!(start > distance) || !std::isfinite(horizon)) return false;
+  const Eigen::Vector2d direction = c / start;
+  const LowestValue lowest =
+      quadraticLowestValue(start, l.dot(direction), q.dot(direction), horizon);
+  return lowest.value > distance + kBoxMargin_m;
+}
+
 // Whether gap polynomial p stays positive on [0, horizon], so that the root finder need not run: a
 // quadratic (a straight cushion) by its lowest value there, exactly; a quartic by the bound
 // p(t) >= c0 - sum |c_k| T^k.
 bool staysApart(const PolynomialCoefficients& p, double horizon) {
   if (!(p[0] > 0) || !std::isfinite(horizon)) return false;
   if (p[3] == 0 && p[4] == 0) {
-    const double c0 = p[0], c1 = p[1], c2 = p[2];
-    const double vertex = c2 > 0 ? -c1 / (2 * c2) : -1;  // where a convex gap is lowest
-    double lowest, magnitude;
-    if (vertex > 0 && vertex < horizon) {
-      const double drop = c1 * c1 / (4 * c2);
-      lowest = c0 - drop;
-      magnitude = c0 + drop;
-    } else {
-      lowest = std::min(c0, c0 + (c1 + c2 * horizon) * horizon);
-      magnitude = c0 + (std::abs(c1) + std::abs(c2) * horizon) * horizon;
-    }
-    return lowest > kQuadraticBoundRoundoffs * 0x1p-53 * magnitude;
+    const LowestValue lowest = quadraticLowestValue(p[0], p[1], p[2], horizon);
+    return lowest.value > kQuadraticBoundRoundoffs * 0x1p-53 * lowest.magnitude;
   }
   double bound = 0, power = 1;
   for (int k = 1; k < 5; ++k) {
@@ -179,10 +201,6 @@ struct Box {
     return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y();
   }
 };
-
-// Boxes are widened by this, m, so that rounding in the path's extremes cannot drop a contact
-// (positions are ~1 m, rounded to ~1e-16 m; contacts are located to ~1e-14 m).
-constexpr double kBoxMargin_m = 1e-9;
 
 // The box a ball of radius R sweeps along `path` over [0, duration] (everything, if the duration
 // is not finite).
@@ -369,6 +387,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     physics::PositionQuadratic path;  // from the reference time
     bool moves = false;               // sliding or rolling: its centre moves
     bool pocketed = false;
+    int pocket = -1;
     // Until when its path holds for certain (its next own event: a state change, cushion, jaw or
     // pocket; pairs are predicted no further) and the box it sweeps (inflated by R) until then.
     double valid_until_s = kInfinity;
@@ -470,6 +489,11 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           continue;
         }
         const JawArc& jaw = table.jaws[k];
+        if (staysFarther(path.constant_m - jaw.centre_m, path.linear_mps, path.quadratic_mps2,
+                         jaw.radius_m + R, horizon)) {
+          ++result.skipped_predictions;
+          continue;
+        }
         const PolynomialCoefficients gap = squaredGap(path, jaw.centre_m, Eigen::Vector2d::Zero(),
                                                       Eigen::Vector2d::Zero(), jaw.radius_m + R);
         const physics::RootSearchResult hit = solve(gap, horizon);
@@ -486,6 +510,11 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           continue;
         }
         const Circle& pocket = table.pockets[k];
+        if (staysFarther(path.constant_m - pocket.centre_m, path.linear_mps, path.quadratic_mps2,
+                         pocket.radius_m, horizon)) {
+          ++result.skipped_predictions;
+          continue;
+        }
         const PolynomialCoefficients gap =
             squaredGap(path, pocket.centre_m, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
                        pocket.radius_m);
@@ -518,6 +547,11 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     const int a = std::min(i, j), b = std::max(i, j);  // the gap of the lower-numbered ball
     const physics::PositionQuadratic& pa = a == i ? path_i : path_j;
     const physics::PositionQuadratic& pb = a == i ? path_j : path_i;
+    if (staysFarther(pa.constant_m - pb.constant_m, pa.linear_mps - pb.linear_mps,
+                     pa.quadratic_mps2 - pb.quadratic_mps2, 2 * R, std::max(0.0, horizon))) {
+      ++result.skipped_predictions;
+      return;
+    }
     const PolynomialCoefficients gap =
         squaredGap(pa, pb.constant_m, pb.linear_mps, pb.quadratic_mps2, 2 * R);
     const physics::RootSearchResult hit = solve(gap, std::max(0.0, horizon));
@@ -643,6 +677,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         break;  // advanceWithinState set the next state exactly
       case EventKind::Pocket:
         balls[best.ball].pocketed = true;
+        balls[best.ball].pocket = best.index;
         break;
       case EventKind::Cushion:
       case EventKind::Jaw: {
@@ -721,6 +756,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   result.final_balls.resize(n);
   for (int i = 0; i < n; ++i) {
     result.final_balls[i].pocketed = balls[i].pocketed;
+    result.final_balls[i].pocket = balls[i].pocket;
     result.final_balls[i].state = balls[i].pocketed
                                       ? balls[i].state
                                       : physics::advanceWithinState(p.cloth, balls[i].state, 0);

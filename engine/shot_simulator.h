@@ -70,8 +70,9 @@ enum class EventKind {
 const char* eventKindName(EventKind kind);
 
 struct BallRecord {
-  physics::BallState state;
+  physics::BallState state;  // a pocketed ball's: as it fell in
   bool pocketed = false;
+  int pocket = -1;  // the pocket it fell into (TableGeometry::pockets), when pocketed
 };
 
 struct Event {

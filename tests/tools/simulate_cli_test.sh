@@ -26,6 +26,12 @@ assert times == sorted(times), "events in time order"
 assert len(d["final"]) == 10, len(d["final"])
 assert d["first_ball_hit"] == "1", d["first_ball_hit"]
 assert {b["id"] for b in d["final"]} == {"cue"} | {str(i) for i in range(1, 10)}
+# A pocketed ball says which pocket, matching its pocket event; a ball on the table names none.
+for b in d["final"]:
+    falls = [e for e in d["events"] if e["type"] == "pocket" and e["ball"] == b["id"]]
+    assert b["pocketed"] == bool(falls), b
+    assert (b.get("pocket") == falls[0]["index"]) if falls else "pocket" not in b, b
+assert any(b["pocketed"] for b in d["final"]), "the break pockets a ball"
 # Trajectories: per ball, pieces starting at 0 in time order; the cue ball's first piece is the strike.
 assert set(d["trajectories"]) == {b["id"] for b in d["final"]}
 for pieces in d["trajectories"].values():

@@ -32,7 +32,8 @@ void runSimulate(const SimulateFlags& flags) {
   if (!flags.json_path.empty()) json_file = std::make_unique<AtomicFile>(flags.json_path, "--json");
   const engine::Scene scene = engine::loadScene(flags.scene);
   const auto start = std::chrono::steady_clock::now();
-  const engine::SceneRun run = engine::runScene(scene, /*record_trajectories=*/json_file != nullptr);
+  const engine::SceneRun run =
+      engine::runScene(scene, /*record_trajectories=*/json_file != nullptr);
   const double wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const engine::SimulationResult& r = run.result;
@@ -57,8 +58,8 @@ void runSimulate(const SimulateFlags& flags) {
   }
   const engine::BallRecord& cue = r.final_balls.at(cue_index);
   std::cout << std::setprecision(4) << std::fixed;
-  std::cout << "scene: " << flags.scene << " (" << scene.table.name << ", "
-            << run.ball_ids.size() << " balls)\n";
+  std::cout << "scene: " << flags.scene << " (" << scene.table.name << ", " << run.ball_ids.size()
+            << " balls)\n";
   std::cout << "strike: cue ball '" << scene.cue_ball << "' at " << run.strike.ball.v.norm()
             << " m/s\n";
   const nlohmann::json physics =
@@ -91,9 +92,8 @@ void runSimulate(const SimulateFlags& flags) {
     out["pocketed"] = pocketed;
     out["physics"] = physics;  // the parameters the shot ran with, in the scene format's keys
     for (const engine::Event& e : r.events) {
-      nlohmann::json event = {{"time_s", e.time_s},
-                              {"type", engine::eventKindName(e.kind)},
-                              {"ball", id(e.ball)}};
+      nlohmann::json event = {
+          {"time_s", e.time_s}, {"type", engine::eventKindName(e.kind)}, {"ball", id(e.ball)}};
       if (e.other >= 0) event["other"] = id(e.other);
       if (e.index >= 0) event["index"] = e.index;
       for (const auto& s : e.before) event["before"].push_back(stateJson(s));
@@ -104,9 +104,10 @@ void runSimulate(const SimulateFlags& flags) {
       nlohmann::json ball = stateJson(r.final_balls[i].state);
       ball["id"] = id(static_cast<int>(i));
       ball["pocketed"] = r.final_balls[i].pocketed;
+      if (r.final_balls[i].pocketed) ball["pocket"] = r.final_balls[i].pocket;
       out["final"].push_back(ball);
-      // The exact path: from each piece's start the ball moves in closed form (physics/cloth_motion.h
-      // `advance`) from that state until the next piece.
+      // The exact path: from each piece's start the ball moves in closed form
+      // (physics/cloth_motion.h `advance`) from that state until the next piece.
       nlohmann::json pieces = nlohmann::json::array();
       for (const engine::TrajectoryPiece& piece : r.trajectories[i]) {
         nlohmann::json q = stateJson(piece.state);
