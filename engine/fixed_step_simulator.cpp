@@ -7,6 +7,7 @@
 #include <string>
 #include <tuple>
 
+#include "engine/contact_geometry.h"
 #include "physics/value_text.h"
 
 namespace baize::engine {
@@ -25,40 +26,6 @@ constexpr int kResolutionsPerContact = 64;
 // Gauss-Seidel sweeps of the position-only push-out per step; overlap a sweep creates elsewhere is
 // found in the next step.
 constexpr int kPushOutSweeps = 4;
-
-// The cushion model's local frame for a contact normal n (pointing from the cushion or jaw towards
-// the ball): y into the cushion (-n), x along it (n turned +90 degrees), z up. The same frame as
-// the event loop builds in shot_simulator.cpp (not shared from there: that file is private to it).
-struct ContactFrame {
-  Eigen::Vector3d x, y;
-  explicit ContactFrame(const Eigen::Vector2d& n) : x(-n.y(), n.x(), 0), y(-n.x(), -n.y(), 0) {}
-  physics::BallVelocity toLocal(const BallState& ball) const {
-    physics::BallVelocity local;
-    local.v = {ball.velocity.dot(x), ball.velocity.dot(y), 0};
-    local.w = {ball.angular_velocity.dot(x), ball.angular_velocity.dot(y),
-               ball.angular_velocity.z()};
-    return local;
-  }
-  void toTable(const physics::BallVelocity& local, BallState* ball) const {
-    ball->velocity = local.v.x() * x + local.v.y() * y;
-    ball->velocity.z() = 0;
-    ball->angular_velocity = local.w.x() * x + local.w.y() * y + Eigen::Vector3d(0, 0, local.w.z());
-  }
-};
-
-// Whether the direction from the jaw's centre to q lies within the jaw's angular range.
-bool withinJawRange(const JawArc& jaw, const Eigen::Vector2d& q) {
-  double angle = std::atan2(q.y() - jaw.centre_m.y(), q.x() - jaw.centre_m.x());
-  while (angle < jaw.start_angle_rad) angle += 2 * M_PI;
-  return angle <= jaw.end_angle_rad;
-}
-
-// Whether the ball's centre lies beside the straight cushion (its contact point between the ends).
-bool besideSegment(const CushionSegment& c, const Eigen::Vector2d& q) {
-  const Eigen::Vector2d along = c.end_m - c.start_m;
-  const double s = (q - c.start_m).dot(along) / along.squaredNorm();
-  return s >= 0 && s <= 1;
-}
 
 bool translates(const physics::ClothParams& cloth, const BallState& ball) {
   const physics::MotionState state = physics::motionState(cloth, ball);
@@ -177,7 +144,7 @@ void FixedStepper::addContactsOf(int i) {
   for (int k = 0; k < static_cast<int>(table_.jaws.size()); ++k) {
     const JawArc& jaw = table_.jaws[k];
     const double reach_m = jaw.radius_m + R_ + kContactSlack_m;
-    if ((q - jaw.centre_m).squaredNorm() <= reach_m * reach_m && withinJawRange(jaw, q))
+    if ((q - jaw.centre_m).squaredNorm() <= reach_m * reach_m && onJawArc(jaw, q))
       contacts_.push_back({EventKind::Jaw, i, -1, k});
   }
   scanned_[i] = 1;
@@ -366,57 +333,7 @@ void validateFixedStepInput(const SimulationParams& p, const TableGeometry& tabl
                          "it must lie in [" + physics::valueText(kMinFixedTimeStep_s) + ", " +
                              physics::valueText(kMaxFixedTimeStep_s) + "]");
   }
-  physics::validateClothParams(p.cloth);
-  physics::validateCushionParams(p.cushion);
-  physics::validateBallBallParams(p.ball_ball);
-  const double R = p.cushion.radius_m;
-  if (p.cloth.radius_m != R || p.ball_ball.radius_m != R) {
-    physics::rejectValue("ball radius of the cloth and ball-ball parameters (m)", p.cloth.radius_m,
-                         "it must equal the cushion parameters' radius " + physics::valueText(R));
-  }
-  if (p.ball_ball.mass1_kg != p.cushion.mass_kg || p.ball_ball.mass2_kg != p.cushion.mass_kg) {
-    physics::rejectValue(
-        "ball mass of the ball-ball parameters (kg)", p.ball_ball.mass1_kg,
-        "it must equal the cushion parameters' mass " + physics::valueText(p.cushion.mass_kg));
-  }
-  for (const CushionSegment& c : table.cushions) {
-    if (!(std::abs(c.inward_normal.norm() - 1) < 1e-9) || !((c.end_m - c.start_m).norm() > 0))
-      throw std::invalid_argument("cushion segment: it needs a unit inward normal and two ends");
-  }
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    const std::string who = "ball " + std::to_string(i);
-    try {
-      physics::validateBallState(balls[i]);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(who + ": " + e.what());
-    }
-    const Eigen::Vector2d& q = balls[i].position;
-    for (std::size_t j = 0; j < i; ++j) {
-      const double gap = (q - balls[j].position).norm() - 2 * R;
-      if (gap < -kContactSlack_m) {
-        physics::rejectValue(who + " overlaps ball " + std::to_string(j) + ": their gap (m)", gap,
-                             "balls may touch but not overlap (gap >= 0)");
-      }
-    }
-    for (std::size_t k = 0; k < table.cushions.size(); ++k) {
-      const CushionSegment& c = table.cushions[k];
-      const double distance = c.inward_normal.dot(q - c.start_m);
-      if (besideSegment(c, q) && distance < R - kContactSlack_m) {
-        physics::rejectValue(
-            who + " is beyond cushion " + std::to_string(k) + ": its centre's distance from it (m)",
-            distance, "it must be at least the radius " + physics::valueText(R));
-      }
-    }
-    for (std::size_t k = 0; k < table.jaws.size(); ++k) {
-      const JawArc& jaw = table.jaws[k];
-      const double distance = (q - jaw.centre_m).norm();
-      if (withinJawRange(jaw, q) && distance < jaw.radius_m + R - kContactSlack_m) {
-        physics::rejectValue(who + " is inside jaw " + std::to_string(k) +
-                                 ": its centre's distance from the jaw's centre (m)",
-                             distance, "it must be at least the jaw's radius plus the ball's");
-      }
-    }
-  }
+  validateSimulationInput(p, table, balls);
 }
 
 }  // namespace

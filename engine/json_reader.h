@@ -2,8 +2,8 @@
 // says what is allowed. One reader serves the table and ball-set loaders.
 #pragma once
 
-#include <initializer_list>
 #include <Eigen/Core>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

@@ -78,7 +78,8 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
     }
   }
   if (result.balls.empty()) {
-    throw std::invalid_argument(source + ": the scene places no balls: give a rack, balls by id, or both");
+    throw std::invalid_argument(source +
+                                ": the scene places no balls: give a rack, balls by id, or both");
   }
 
   const JsonReader shot = scene.object("shot");
@@ -94,9 +95,10 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   const PlacedBall* cue = find(result.cue_ball);
   if (!cue) shot.reject("cue_ball", "a ball placed in the scene");
   if (shot.has("aim_at") == shot.has("heading_deg")) {
-    shot.reject(shot.has("aim_at") ? "heading_deg" : "aim_at",
-                "a shot is aimed either at a ball (aim_at) or along a heading (heading_deg), not both "
-                "and not neither");
+    shot.reject(
+        shot.has("aim_at") ? "heading_deg" : "aim_at",
+        "a shot is aimed either at a ball (aim_at) or along a heading (heading_deg), not both "
+        "and not neither");
   }
   double heading_rad = 0;
   if (shot.has("aim_at")) {
@@ -147,7 +149,9 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   return result;
 }
 
-Scene loadScene(const std::string& path) { return sceneFromJson(JsonReader::parseFile(path), path); }
+Scene loadScene(const std::string& path) {
+  return sceneFromJson(JsonReader::parseFile(path), path);
+}
 
 SimulationParams simulationParamsFor(const Scene& scene) {
   SimulationParams p = poolSimulationParams();

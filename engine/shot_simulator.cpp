@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "engine/contact_geometry.h"
 #include "physics/polynomial_roots.h"
 #include "physics/value_text.h"
 
@@ -118,32 +119,6 @@ bool staysApart(const PolynomialCoefficients& p, double horizon) {
   return p[0] - bound > 0;
 }
 
-// The cushion's local frame: y into the cushion (against the inward normal), x along it, z up.
-struct CushionFrame {
-  Eigen::Vector3d x, y;
-  explicit CushionFrame(const Eigen::Vector2d& inward_normal)
-      : x(-inward_normal.y(), inward_normal.x(), 0), y(-inward_normal.x(), -inward_normal.y(), 0) {}
-  physics::BallVelocity toLocal(const BallState& ball) const {
-    physics::BallVelocity local;
-    local.v = {ball.velocity.dot(x), ball.velocity.dot(y), 0};
-    local.w = {ball.angular_velocity.dot(x), ball.angular_velocity.dot(y),
-               ball.angular_velocity.z()};
-    return local;
-  }
-  void toTable(const physics::BallVelocity& local, BallState* ball) const {
-    ball->velocity = local.v.x() * x + local.v.y() * y;
-    ball->velocity.z() = 0;
-    ball->angular_velocity = local.w.x() * x + local.w.y() * y + Eigen::Vector3d(0, 0, local.w.z());
-  }
-};
-
-// Whether the direction from a jaw's centre to point q lies within the jaw's angular range.
-bool onArc(const JawArc& jaw, const Eigen::Vector2d& q) {
-  double angle = std::atan2(q.y() - jaw.centre_m.y(), q.x() - jaw.centre_m.x());
-  while (angle < jaw.start_angle_rad) angle += 2 * M_PI;
-  return angle <= jaw.end_angle_rad;
-}
-
 // Raises the separation speed of a pressed contact towards kSustainedContactSpeed_mps (see there)
 // by a normal impulse, paying the energy it adds out of the balls' spin and out of what the impact
 // itself dissipated (`energy_before_J` is the balls' kinetic energy before it): as far as that
@@ -221,8 +196,10 @@ Box sweptBox(const physics::PositionQuadratic& path, double duration, double R) 
   return box.inflated(R + kBoxMargin_m);
 }
 
-void validateInput(const SimulationParams& p, const TableGeometry& table,
-                   const std::vector<BallState>& balls) {
+}  // namespace
+
+void validateSimulationInput(const SimulationParams& p, const TableGeometry& table,
+                             const std::vector<BallState>& balls) {
   physics::validateClothParams(p.cloth);
   physics::validateCushionParams(p.cushion);
   physics::validateBallBallParams(p.ball_ball);
@@ -284,7 +261,7 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
     for (std::size_t k = 0; k < table.jaws.size(); ++k) {
       const JawArc& jaw = table.jaws[k];
       const double distance = (balls[i].position - jaw.centre_m).norm();
-      if (distance < jaw.radius_m + R - kContactSlack_m && onArc(jaw, balls[i].position)) {
+      if (distance < jaw.radius_m + R - kContactSlack_m && onJawArc(jaw, balls[i].position)) {
         physics::rejectValue(who(i) + " is inside jaw " + std::to_string(k) +
                                  ": its centre's distance from the jaw's centre (m)",
                              distance, "it must be at least the jaw's radius plus the ball's");
@@ -292,10 +269,8 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
     }
     for (std::size_t k = 0; k < table.cushions.size(); ++k) {
       const CushionSegment& c = table.cushions[k];
-      const Eigen::Vector2d along = c.end_m - c.start_m;
-      const double s = (balls[i].position - c.start_m).dot(along) / along.squaredNorm();
       const double distance = c.inward_normal.dot(balls[i].position - c.start_m);
-      if (s >= 0 && s <= 1 && distance < R - kContactSlack_m) {
+      if (distance < R - kContactSlack_m && besideSegment(c, balls[i].position)) {
         physics::rejectValue(who(i) + " is beyond cushion " + std::to_string(k) +
                                  ": its centre's distance from it (m)",
                              distance, "it must be at least the radius " + physics::valueText(R));
@@ -303,8 +278,6 @@ void validateInput(const SimulationParams& p, const TableGeometry& table,
     }
   }
 }
-
-}  // namespace
 
 TableGeometry rectangularTable(double length_m, double width_m) {
   if (!(length_m > 0 && std::isfinite(length_m)))
@@ -368,7 +341,7 @@ const char* eventKindName(EventKind kind) {
 
 SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
                           const std::vector<BallState>& input) {
-  validateInput(p, table, input);
+  validateSimulationInput(p, table, input);
   const double R = p.cushion.radius_m;
   SimulationResult result;
   const int n = static_cast<int>(input.size());
@@ -498,7 +471,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
                                                       Eigen::Vector2d::Zero(), jaw.radius_m + R);
         const physics::RootSearchResult hit = solve(gap, horizon);
         const Candidate candidate{hit.time, EventKind::Jaw, i, -1, k};
-        if (hit.outcome == physics::RootOutcome::Root && onArc(jaw, path.at(hit.time)) &&
+        if (hit.outcome == physics::RootOutcome::Root && onJawArc(jaw, path.at(hit.time)) &&
             absolute(candidate).dt_s < kInfinity && candidate < best_own) {
           best_own = candidate;
         }
@@ -687,7 +660,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
             best.kind == EventKind::Cushion
                 ? table.cushions[best.index].inward_normal
                 : Eigen::Vector2d((a.position - table.jaws[best.index].centre_m).normalized());
-        const CushionFrame frame(normal);
+        const ContactFrame frame(normal);
         const physics::BallVelocity local = frame.toLocal(a);
         const bool pressed = path_a.quadratic_mps2.dot(normal) < 0;
         if (local.v.y() > 0 || pressed) {

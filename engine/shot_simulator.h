@@ -107,6 +107,13 @@ struct SimulationResult {
   std::vector<Trajectory> trajectories;  // per ball, when SimulationParams::record_trajectories
 };
 
+// The checks simulate() makes of its input, for other simulators of the same scenes: consistent
+// parameters (ball radius and mass agree across the models), a well-formed table, finite states,
+// no overlapping balls, no ball beyond a cushion or inside a jaw. Throws std::invalid_argument
+// naming the ball and the value.
+void validateSimulationInput(const SimulationParams& params, const TableGeometry& table,
+                             const std::vector<physics::BallState>& balls);
+
 // Simulates until every ball is at rest or pocketed. Throws std::invalid_argument on invalid input
 // (parameters, a non-finite state, overlapping balls, a ball off the table) and std::runtime_error
 // when the shot needs more than max_events events.

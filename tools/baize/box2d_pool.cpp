@@ -246,8 +246,8 @@ class ContactRecorder : public b2ContactListener {
   double cushion_restitution_, cushion_friction_, ball_restitution_, ball_friction_, threshold_;
 };
 
-void validate(const engine::SimulationParams& p, const std::vector<BallState>& balls,
-              const Box2dPoolSettings& s) {
+void validate(const engine::SimulationParams& p, const engine::TableGeometry& table,
+              const std::vector<BallState>& balls, const Box2dPoolSettings& s) {
   if (!(s.time_step_s >= kMinBox2dTimeStep_s && s.time_step_s <= kMaxBox2dTimeStep_s)) {
     physics::rejectValue("Box2D time step (s)", s.time_step_s,
                          "it must lie in [" + physics::valueText(kMinBox2dTimeStep_s) + ", " +
@@ -260,21 +260,7 @@ void validate(const engine::SimulationParams& p, const std::vector<BallState>& b
                          std::min(s.velocity_iterations, s.position_iterations),
                          "both must be >= 1");
   }
-  physics::validateClothParams(p.cloth);
-  physics::validateCushionParams(p.cushion);
-  physics::validateBallBallParams(p.ball_ball);
-  const double R = p.cushion.radius_m;
-  if (p.cloth.radius_m != R || p.ball_ball.radius_m != R) {
-    physics::rejectValue("ball radius of the cloth and ball-ball parameters (m)", p.cloth.radius_m,
-                         "it must equal the cushion parameters' radius " + physics::valueText(R));
-  }
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    try {
-      physics::validateBallState(balls[i]);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("ball " + std::to_string(i) + ": " + e.what());
-    }
-  }
+  engine::validateSimulationInput(p, table, balls);
 }
 
 }  // namespace
@@ -296,7 +282,7 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
                                        const engine::TableGeometry& table,
                                        const std::vector<BallState>& input,
                                        const Box2dPoolSettings& settings) {
-  validate(p, input, settings);
+  validate(p, table, input, settings);
   const double dt = settings.time_step_s;
   const double unit_m = box2dLengthUnit_m(dt);
   auto toBox = [&](const Eigen::Vector2d& q) {
