@@ -19,6 +19,7 @@
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/box2d_pool.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/median.h"
 
 namespace baize::tools {
 namespace {
@@ -161,11 +162,6 @@ Outcome outcomeOf(const engine::SimulationResult& r, int cue) {
       o.cue_contacts.push_back(token);
   }
   return o;
-}
-
-double median(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
 }
 
 using Simulator = std::function<engine::SimulationResult(const Shot&)>;

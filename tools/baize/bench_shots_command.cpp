@@ -15,6 +15,7 @@
 #include "engine/scene.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/median.h"
 
 namespace baize::tools {
 namespace {
@@ -25,11 +26,6 @@ struct BenchShotsFlags {
   int random_shots = 1000;  // random single shots
 };
 
-double median(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
-
 // Median wall time of simulating `scene` (microseconds) and its event count.
 std::pair<double, std::size_t> timeScene(const engine::Scene& scene, int repeat) {
   std::vector<double> times;
@@ -38,7 +34,8 @@ std::pair<double, std::size_t> timeScene(const engine::Scene& scene, int repeat)
     const auto start = std::chrono::steady_clock::now();
     const engine::SceneRun run = engine::runScene(scene);
     times.push_back(
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+            .count());
     events = run.result.events.size();
   }
   return {median(times), events};
@@ -48,7 +45,9 @@ std::pair<double, std::size_t> timeScene(const engine::Scene& scene, int repeat)
 // cue ball struck at 0.5-4 m/s in any direction with any tip offset. Each shot's own event count.
 std::vector<engine::Scene> randomShots(int count) {
   std::mt19937_64 engine(20261121);
-  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53); };
+  auto uniform = [&](double lo, double hi) {
+    return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53);
+  };
   engine::Scene base;
   base.table = engine::builtinTable("pool-9ft");
   base.ball_set = engine::builtinBallSet("pool");
@@ -93,13 +92,14 @@ void runBenchShots(const BenchShotsFlags& flags) {
     const auto start = std::chrono::steady_clock::now();
     const engine::SceneRun run = engine::runScene(s);
     times.push_back(
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+            .count());
     events.push_back(static_cast<double>(run.result.events.size()));
   }
   const double all_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - all_start).count();
-  table << "random-single-shots," << std::setprecision(4) << median(times) << ','
-        << median(events) << '\n';
+  table << "random-single-shots," << std::setprecision(4) << median(times) << ',' << median(events)
+        << '\n';
   std::cout << table.str();
   std::cout << "random single shots: " << std::setprecision(4) << shots.size() / all_s
             << " shots/s on one core (" << shots.size() << " shots; median events as above)\n";

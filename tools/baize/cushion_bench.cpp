@@ -6,6 +6,8 @@
 #include <limits>
 #include <random>
 
+#include "tools/baize/median.h"
+
 namespace baize::tools {
 namespace {
 
@@ -28,12 +30,6 @@ double impactError(const physics::BallVelocity& ball, const physics::BallVelocit
   const double velocity_error = (ball.v - reference.v).cwiseAbs().maxCoeff();
   const double spin_error = radius_m * (ball.w - reference.w).cwiseAbs().maxCoeff();
   return std::max(velocity_error, spin_error) / speed_mps;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
 double elapsedNs(Clock::time_point start, Clock::time_point end) {
