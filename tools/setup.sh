@@ -11,6 +11,9 @@ packages=(
   libcli11-dev           # the baize command line
   libgtest-dev libgmock-dev  # unit tests
   libbenchmark-dev       # micro benchmarks
+  libosmesa6-dev         # off-screen OpenGL (llvmpipe) for baize render
+  libpng-dev             # PNG pictures
+  libsdl2-dev            # the baize-view window
 )
 
 missing=()

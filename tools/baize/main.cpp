@@ -4,9 +4,11 @@
 #include <iostream>
 
 #include "tools/baize/bench_cushion_command.h"
+#include "tools/baize/bench_render_command.h"
 #include "tools/baize/bench_shots_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_command.h"
+#include "tools/baize/render_command.h"
 #include "tools/baize/simulate_command.h"
 #include "tools/baize/stress_command.h"
 
@@ -17,12 +19,14 @@ int main(int argc, char** argv) {
 
   addCushionCommand(app);
   addSimulateCommand(app);
+  addRenderCommand(app);
   addStressCommand(app);
 
   CLI::App* bench = app.add_subcommand("bench", "Measure the speed and accuracy of the models");
   bench->require_subcommand(1, 1);
   addBenchCushionCommand(*bench);
   addBenchShotsCommand(*bench);
+  addBenchRenderCommand(*bench);
 
   try {
     app.parse(argc, argv);

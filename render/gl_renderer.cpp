@@ -1,0 +1,336 @@
+#include "render/gl_renderer.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <stdexcept>
+
+namespace baize::render {
+namespace {
+
+// How items reach the shader (the vertex's `shape.x`).
+enum ShapeKind : int {
+  kFlatGeometry = 0,  // triangles in the table plane
+  kFlatDisc = 1,      // a quad in the table plane, cut to a disc in the shader
+  kFlatRing = 2,
+  kBall = 3,  // a quad facing the camera, shaded as a sphere
+  kStripedBall = 4,
+};
+
+// Disc quads reach this far beyond the radius (in radii) so that the analytic edge has room to
+// fade out even on a disc a few pixels across.
+constexpr float kDiscQuadExtent = 1.5f;
+
+struct Vertex {
+  float position[3];  // the point, or a disc's centre, m
+  float colour[4];
+  float local[2];  // a disc's corner in radii
+  float shape[3];  // kind, radius (m), inner fraction (rings)
+};
+
+constexpr const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec4 colour;
+layout(location = 2) in vec2 local;
+layout(location = 3) in vec3 shape;
+uniform mat4 view;
+uniform mat4 projection;
+out vec4 v_colour;
+out vec2 v_local;
+flat out int v_kind;
+flat out float v_inner;
+void main() {
+  int kind = int(shape.x + 0.5);
+  vec4 eye;
+  if (kind == 1 || kind == 2) {
+    eye = view * vec4(position + vec3(local * shape.y, 0.0), 1.0);  // lies on the cloth
+  } else if (kind >= 3) {
+    eye = view * vec4(position, 1.0);  // a sphere's outline faces the camera
+    eye.xy += local * shape.y;
+  } else {
+    eye = view * vec4(position, 1.0);
+  }
+  gl_Position = projection * eye;
+  v_colour = colour;
+  v_local = local;
+  v_kind = kind;
+  v_inner = shape.z;
+}
+)";
+
+constexpr const char* kFragmentShader = R"(#version 330 core
+in vec4 v_colour;
+in vec2 v_local;
+flat in int v_kind;
+flat in float v_inner;
+out vec4 fragment;
+void main() {
+  if (v_kind == 0) {
+    fragment = v_colour;
+    return;
+  }
+  float r = length(v_local);
+  float edge = max(fwidth(r), 1e-4);  // one pixel, in radii
+  float alpha = clamp((1.0 - r) / edge + 0.5, 0.0, 1.0);
+  if (v_kind == 2) alpha *= clamp((r - v_inner) / edge + 0.5, 0.0, 1.0);
+  if (alpha <= 0.0) discard;
+  vec3 colour = v_colour.rgb;
+  if (v_kind >= 3) {
+    vec2 d = v_local / max(r, 1.0);
+    vec3 normal = vec3(d, sqrt(max(1.0 - dot(d, d), 0.0)));
+    vec3 base = colour;
+    if (v_kind == 4 && abs(v_local.y) > 0.5) base = vec3(0.97, 0.97, 0.95);
+    vec3 light = normalize(vec3(-0.35, 0.45, 0.82));
+    float diffuse = max(dot(normal, light), 0.0);
+    float highlight = pow(max(dot(normal, normalize(light + vec3(0.0, 0.0, 1.0))), 0.0), 60.0);
+    colour = base * (0.30 + 0.70 * diffuse) + vec3(0.55) * highlight;
+  }
+  fragment = vec4(colour, v_colour.a * alpha);
+}
+)";
+
+void put(std::vector<Vertex>& out, const Eigen::Vector3d& p, const Rgba& c, float lx, float ly,
+         int kind, double radius, double inner) {
+  out.push_back(
+      Vertex{{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())},
+             {c.r, c.g, c.b, c.a},
+             {lx, ly},
+             {static_cast<float>(kind), static_cast<float>(radius), static_cast<float>(inner)}});
+}
+
+void addFlatTriangle(std::vector<Vertex>& out, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                     const Eigen::Vector2d& c, double z, const Rgba& colour) {
+  for (const Eigen::Vector2d* p : {&a, &b, &c}) {
+    put(out, Eigen::Vector3d(p->x(), p->y(), z), colour, 0, 0, kFlatGeometry, 0, 0);
+  }
+}
+
+void addStroke(std::vector<Vertex>& out, const Stroke& stroke) {
+  const double half = stroke.width_m / 2;
+  for (std::size_t i = 1; i < stroke.points_m.size(); ++i) {
+    const Eigen::Vector2d a = stroke.points_m[i - 1], b = stroke.points_m[i];
+    const double length = (b - a).norm();
+    if (length == 0) continue;
+    const Eigen::Vector2d along = (b - a) / length * half;  // square caps close the joins
+    const Eigen::Vector2d across(-along.y(), along.x());
+    const Eigen::Vector2d p0 = a - along - across, p1 = b + along - across;
+    const Eigen::Vector2d p2 = b + along + across, p3 = a - along + across;
+    addFlatTriangle(out, p0, p1, p2, stroke.z_m, stroke.colour);
+    addFlatTriangle(out, p0, p2, p3, stroke.z_m, stroke.colour);
+  }
+}
+
+void addDisc(std::vector<Vertex>& out, const Disc& disc) {
+  int kind = kFlatDisc;
+  if (disc.style == DiscStyle::Ring) kind = kFlatRing;
+  if (disc.style == DiscStyle::Ball) kind = kBall;
+  if (disc.style == DiscStyle::StripedBall) kind = kStripedBall;
+  const float e = kDiscQuadExtent;
+  const float corners[6][2] = {{-e, -e}, {e, -e}, {e, e}, {-e, -e}, {e, e}, {-e, e}};
+  for (const auto& corner : corners) {
+    put(out, disc.centre_m, disc.colour, corner[0], corner[1], kind, disc.radius_m,
+        disc.inner_fraction);
+  }
+}
+
+bool isBall(const DrawItem& item) {
+  const Disc* disc = std::get_if<Disc>(&item);
+  return disc != nullptr &&
+         (disc->style == DiscStyle::Ball || disc->style == DiscStyle::StripedBall);
+}
+
+Eigen::Matrix4f toFloat(const Eigen::Matrix4d& m) { return m.cast<float>(); }
+
+}  // namespace
+
+GlRenderer::GlRenderer(const GlContext& context) : gl_(loadGlFunctions(context)) {
+  const auto compile = [&](GLenum type, const char* source) {
+    const GLuint shader = gl_.CreateShader(type);
+    gl_.ShaderSource(shader, 1, &source, nullptr);
+    gl_.CompileShader(shader);
+    GLint ok = 0;
+    gl_.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      char log[2048] = {};
+      gl_.GetShaderInfoLog(shader, sizeof log, nullptr, log);
+      gl_.DeleteShader(shader);
+      throw std::runtime_error(std::string("the renderer's shader does not compile: ") + log);
+    }
+    return shader;
+  };
+  const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader);
+  const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+  program_ = gl_.CreateProgram();
+  gl_.AttachShader(program_, vertex);
+  gl_.AttachShader(program_, fragment);
+  gl_.LinkProgram(program_);
+  gl_.DeleteShader(vertex);
+  gl_.DeleteShader(fragment);
+  GLint linked = 0;
+  gl_.GetProgramiv(program_, GL_LINK_STATUS, &linked);
+  if (!linked) {
+    char log[2048] = {};
+    gl_.GetProgramInfoLog(program_, sizeof log, nullptr, log);
+    gl_.DeleteProgram(program_);
+    throw std::runtime_error(std::string("the renderer's shaders do not link: ") + log);
+  }
+  view_location_ = gl_.GetUniformLocation(program_, "view");
+  projection_location_ = gl_.GetUniformLocation(program_, "projection");
+
+  gl_.GenVertexArrays(1, &vertex_array_);
+  gl_.GenBuffers(1, &vertex_buffer_);
+  gl_.BindVertexArray(vertex_array_);
+  gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+  const auto attribute = [&](GLuint index, GLint size, std::size_t offset) {
+    gl_.EnableVertexAttribArray(index);
+    gl_.VertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                            reinterpret_cast<const void*>(offset));
+  };
+  attribute(0, 3, offsetof(Vertex, position));
+  attribute(1, 4, offsetof(Vertex, colour));
+  attribute(2, 2, offsetof(Vertex, local));
+  attribute(3, 3, offsetof(Vertex, shape));
+
+  GLint max_samples = 1;
+  gl_.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  samples_ = std::max(1, std::min(kWantedSamples, static_cast<int>(max_samples)));
+}
+
+GlRenderer::~GlRenderer() {
+  releaseFramebuffers();
+  gl_.DeleteBuffers(1, &vertex_buffer_);
+  gl_.DeleteVertexArrays(1, &vertex_array_);
+  gl_.DeleteProgram(program_);
+}
+
+void GlRenderer::releaseFramebuffers() {
+  if (multisample_framebuffer_ != 0) {
+    gl_.DeleteFramebuffers(1, &multisample_framebuffer_);
+    gl_.DeleteRenderbuffers(1, &multisample_colour_);
+    gl_.DeleteFramebuffers(1, &resolved_framebuffer_);
+    gl_.DeleteRenderbuffers(1, &resolved_colour_);
+  }
+  multisample_framebuffer_ = multisample_colour_ = resolved_framebuffer_ = resolved_colour_ = 0;
+  width_px_ = height_px_ = 0;
+}
+
+void GlRenderer::resize(int width_px, int height_px) {
+  if (width_px == width_px_ && height_px == height_px_) return;
+  releaseFramebuffers();
+  const auto make = [&](GLuint& framebuffer, GLuint& colour, int samples) {
+    gl_.GenFramebuffers(1, &framebuffer);
+    gl_.GenRenderbuffers(1, &colour);
+    gl_.BindRenderbuffer(GL_RENDERBUFFER, colour);
+    if (samples > 1) {
+      gl_.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width_px, height_px);
+    } else {
+      gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_px, height_px);
+    }
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+    if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw std::runtime_error("the OpenGL context cannot make a " + std::to_string(width_px) +
+                               " x " + std::to_string(height_px) + " px framebuffer");
+    }
+  };
+  make(multisample_framebuffer_, multisample_colour_, samples_);
+  make(resolved_framebuffer_, resolved_colour_, 1);
+  width_px_ = width_px;
+  height_px_ = height_px;
+}
+
+void GlRenderer::draw(const Picture& picture, const Camera& camera) {
+  validateImageSize(camera.width_px, camera.height_px);
+  resize(camera.width_px, camera.height_px);
+
+  std::vector<Vertex> vertices;
+  std::vector<const Disc*> balls;
+  for (const DrawItem& item : picture.items) {
+    if (isBall(item)) {
+      balls.push_back(&std::get<Disc>(item));
+    } else if (const Mesh* mesh = std::get_if<Mesh>(&item)) {
+      for (std::size_t i = 0; i + 2 < mesh->triangles_m.size(); i += 3) {
+        addFlatTriangle(vertices, mesh->triangles_m[i], mesh->triangles_m[i + 1],
+                        mesh->triangles_m[i + 2], mesh->z_m, mesh->colour);
+      }
+    } else if (const Stroke* stroke = std::get_if<Stroke>(&item)) {
+      addStroke(vertices, *stroke);
+    } else {
+      addDisc(vertices, std::get<Disc>(item));
+    }
+  }
+  // Balls last, far to near (eye-space z grows towards the camera); ties keep picture order.
+  const auto depth = [&](const Disc* d) { return (camera.view * d->centre_m.homogeneous()).z(); };
+  std::stable_sort(balls.begin(), balls.end(),
+                   [&](const Disc* a, const Disc* b) { return depth(a) < depth(b); });
+  for (const Disc* ball : balls) addDisc(vertices, *ball);
+
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, multisample_framebuffer_);
+  gl_.Viewport(0, 0, camera.width_px, camera.height_px);
+  gl_.Disable(GL_DEPTH_TEST);
+  gl_.Enable(GL_BLEND);
+  gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  if (samples_ > 1) gl_.Enable(GL_MULTISAMPLE);
+  gl_.ClearColor(picture.background.r, picture.background.g, picture.background.b, 1.0f);
+  gl_.Clear(GL_COLOR_BUFFER_BIT);
+
+  gl_.UseProgram(program_);
+  const Eigen::Matrix4f view = toFloat(camera.view), projection = toFloat(camera.projection);
+  gl_.UniformMatrix4fv(view_location_, 1, GL_FALSE, view.data());  // Eigen is column-major too
+  gl_.UniformMatrix4fv(projection_location_, 1, GL_FALSE, projection.data());
+  gl_.BindVertexArray(vertex_array_);
+  gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+  gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+                 vertices.data(), GL_STREAM_DRAW);
+  gl_.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
+
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_);
+  gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_);
+  gl_.BlitFramebuffer(0, 0, width_px_, height_px_, 0, 0, width_px_, height_px_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  const GLenum error = gl_.GetError();
+  if (error != GL_NO_ERROR) {
+    throw std::runtime_error("OpenGL error " + std::to_string(error) + " while drawing");
+  }
+}
+
+Image GlRenderer::readImage() {
+  if (resolved_framebuffer_ == 0) throw std::logic_error("readImage before any draw");
+  Image image;
+  image.width_px = width_px_;
+  image.height_px = height_px_;
+  const std::size_t row_bytes = static_cast<std::size_t>(width_px_) * 4;
+  std::vector<std::uint8_t> bottom_up(row_bytes * height_px_);
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, resolved_framebuffer_);
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl_.Finish();
+  gl_.ReadPixels(0, 0, width_px_, height_px_, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
+  // OpenGL's rows start at the bottom; images start at the top.
+  image.rgba.resize(bottom_up.size());
+  for (int y = 0; y < height_px_; ++y) {
+    std::copy_n(bottom_up.data() + (height_px_ - 1 - y) * row_bytes, row_bytes,
+                image.rgba.data() + y * row_bytes);
+  }
+  const GLenum error = gl_.GetError();
+  if (error != GL_NO_ERROR) {
+    throw std::runtime_error("OpenGL error " + std::to_string(error) + " while reading pixels");
+  }
+  return image;
+}
+
+void GlRenderer::copyTo(unsigned framebuffer) {
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, resolved_framebuffer_);
+  gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  gl_.BlitFramebuffer(0, 0, width_px_, height_px_, 0, 0, width_px_, height_px_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+}
+
+std::string GlRenderer::glVersion() const {
+  const auto text = [&](GLenum name) {
+    const GLubyte* s = gl_.GetString(name);
+    return s == nullptr ? std::string("?") : std::string(reinterpret_cast<const char*>(s));
+  };
+  return text(GL_VERSION) + " (" + text(GL_RENDERER) + ")";
+}
+
+}  // namespace baize::render
