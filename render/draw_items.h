@@ -50,6 +50,15 @@ struct Disc {
 
 using DrawItem = std::variant<Mesh, Stroke, Disc>;
 
+// One row of the legend the renderer lays out in the image's top-left corner: a ball swatch (when
+// `swatch`) and a line of text (printable ASCII).
+struct LegendRow {
+  bool swatch = false;
+  Rgba colour;
+  bool striped = false;
+  std::string text;
+};
+
 // Everything to draw, in painter's order (balls, which stand up from the cloth, are drawn last by
 // the renderer, far to near).
 struct Picture {
@@ -57,6 +66,7 @@ struct Picture {
   Eigen::Vector2d max_corner_m = Eigen::Vector2d::Zero();
   Rgba background{0.12f, 0.12f, 0.13f, 1};
   std::vector<DrawItem> items;
+  std::vector<LegendRow> legend;  // empty: no legend
 };
 
 }  // namespace baize::render

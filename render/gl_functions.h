@@ -60,7 +60,14 @@ namespace baize::render {
   X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                           \
   X(PFNGLUSEPROGRAMPROC, UseProgram)                                         \
   X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                         \
-  X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)
+  X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                             \
+  X(PFNGLUNIFORM1IPROC, Uniform1i)                                           \
+  X(PFNGLGENTEXTURESPROC, GenTextures)                                       \
+  X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                 \
+  X(PFNGLBINDTEXTUREPROC, BindTexture)                                       \
+  X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                   \
+  X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                         \
+  X(PFNGLTEXPARAMETERIPROC, TexParameteri)
 
 struct GlFunctions {
 #define BAIZE_GL_MEMBER(type, name) type name = nullptr;

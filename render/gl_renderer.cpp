@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace baize::render {
@@ -14,7 +15,14 @@ enum ShapeKind : int {
   kFlatRing = 2,
   kBall = 3,  // a quad facing the camera, shaded as a sphere
   kStripedBall = 4,
+  kText = 5,  // a glyph: a quad in the plane whose coverage comes from the atlas texture
 };
+
+// Legend layout, in units of the text size: padding inside the panel, the swatch's radius.
+constexpr double kLegendPadding = 0.5;
+constexpr double kSwatchRadius = 0.4;
+const Rgba kLegendPanel{0.0f, 0.0f, 0.0f, 0.6f};
+const Rgba kLegendText{0.96f, 0.96f, 0.94f, 1.0f};
 
 // Disc quads reach this far beyond the radius (in radii) so that the analytic edge has room to
 // fade out even on a disc a few pixels across.
@@ -43,7 +51,7 @@ void main() {
   vec4 eye;
   if (kind == 1 || kind == 2) {
     eye = view * vec4(position + vec3(local * shape.y, 0.0), 1.0);  // lies on the cloth
-  } else if (kind >= 3) {
+  } else if (kind == 3 || kind == 4) {
     eye = view * vec4(position, 1.0);  // a sphere's outline faces the camera
     eye.xy += local * shape.y;
   } else {
@@ -62,10 +70,15 @@ in vec4 v_colour;
 in vec2 v_local;
 flat in int v_kind;
 flat in float v_inner;
+uniform sampler2D atlas;
 out vec4 fragment;
 void main() {
   if (v_kind == 0) {
     fragment = v_colour;
+    return;
+  }
+  if (v_kind == 5) {
+    fragment = vec4(v_colour.rgb, v_colour.a * texture(atlas, v_local).r);
     return;
   }
   float r = length(v_local);
@@ -74,7 +87,7 @@ void main() {
   if (v_kind == 2) alpha *= clamp((r - v_inner) / edge + 0.5, 0.0, 1.0);
   if (alpha <= 0.0) discard;
   vec3 colour = v_colour.rgb;
-  if (v_kind >= 3) {
+  if (v_kind == 3 || v_kind == 4) {
     vec2 d = v_local / max(r, 1.0);
     vec3 normal = vec3(d, sqrt(max(1.0 - dot(d, d), 0.0)));
     vec3 base = colour;
@@ -175,6 +188,7 @@ GlRenderer::GlRenderer(const GlContext& context) : gl_(loadGlFunctions(context))
   }
   view_location_ = gl_.GetUniformLocation(program_, "view");
   projection_location_ = gl_.GetUniformLocation(program_, "projection");
+  atlas_location_ = gl_.GetUniformLocation(program_, "atlas");
 
   gl_.GenVertexArrays(1, &vertex_array_);
   gl_.GenBuffers(1, &vertex_buffer_);
@@ -197,6 +211,7 @@ GlRenderer::GlRenderer(const GlContext& context) : gl_(loadGlFunctions(context))
 
 GlRenderer::~GlRenderer() {
   releaseFramebuffers();
+  if (atlas_texture_ != 0) gl_.DeleteTextures(1, &atlas_texture_);
   gl_.DeleteBuffers(1, &vertex_buffer_);
   gl_.DeleteVertexArrays(1, &vertex_array_);
   gl_.DeleteProgram(program_);
@@ -273,15 +288,9 @@ void GlRenderer::draw(const Picture& picture, const Camera& camera) {
   gl_.ClearColor(picture.background.r, picture.background.g, picture.background.b, 1.0f);
   gl_.Clear(GL_COLOR_BUFFER_BIT);
 
-  gl_.UseProgram(program_);
   const Eigen::Matrix4f view = toFloat(camera.view), projection = toFloat(camera.projection);
-  gl_.UniformMatrix4fv(view_location_, 1, GL_FALSE, view.data());  // Eigen is column-major too
-  gl_.UniformMatrix4fv(projection_location_, 1, GL_FALSE, projection.data());
-  gl_.BindVertexArray(vertex_array_);
-  gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-  gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
-                 vertices.data(), GL_STREAM_DRAW);
-  gl_.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
+  drawVertices(vertices.data(), vertices.size(), view.data(), projection.data());
+  if (!picture.legend.empty()) drawLegend(picture.legend);
 
   gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_);
   gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_);
@@ -291,6 +300,105 @@ void GlRenderer::draw(const Picture& picture, const Camera& camera) {
   if (error != GL_NO_ERROR) {
     throw std::runtime_error("OpenGL error " + std::to_string(error) + " while drawing");
   }
+}
+
+void GlRenderer::drawVertices(const void* vertices, std::size_t count, const float* view,
+                              const float* projection) {
+  gl_.UseProgram(program_);
+  gl_.UniformMatrix4fv(view_location_, 1, GL_FALSE, view);  // Eigen is column-major too
+  gl_.UniformMatrix4fv(projection_location_, 1, GL_FALSE, projection);
+  gl_.Uniform1i(atlas_location_, 0);
+  gl_.BindVertexArray(vertex_array_);
+  gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+  gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(count * sizeof(Vertex)), vertices,
+                 GL_STREAM_DRAW);
+  gl_.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count));
+}
+
+// The legend in pixel coordinates (x right, y down from the top-left corner): a translucent
+// panel, then per row a shaded ball swatch and the text.
+void GlRenderer::drawLegend(const std::vector<LegendRow>& legend) {
+  const int text_size = legendTextSize(height_px_);
+  if (!atlas_ || atlas_->pixelSize() != text_size) {
+    atlas_ = std::make_unique<GlyphAtlas>(defaultFontPath(), text_size);
+    if (atlas_texture_ == 0) gl_.GenTextures(1, &atlas_texture_);
+    gl_.ActiveTexture(GL_TEXTURE0);
+    gl_.BindTexture(GL_TEXTURE_2D, atlas_texture_);
+    gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas_->width(), atlas_->height(), 0, GL_RED,
+                   GL_UNSIGNED_BYTE, atlas_->coverage().data());
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  const GlyphAtlas& atlas = *atlas_;
+  const double line = atlas.lineHeight();
+  const double pad = kLegendPadding * text_size;
+  const double radius = kSwatchRadius * text_size;
+  double text_width = 0;
+  for (const LegendRow& row : legend) {
+    text_width = std::max<double>(text_width,
+                                  atlas.textWidth(row.text) + (row.swatch ? 2 * radius + pad : 0));
+  }
+  const double left = kLegendMargin_px, top = kLegendMargin_px;
+  const double right = left + 2 * pad + text_width;
+  const double bottom = top + 2 * pad + line * static_cast<double>(legend.size());
+
+  std::vector<Vertex> vertices;
+  addFlatTriangle(vertices, {left, top}, {right, top}, {right, bottom}, 0, kLegendPanel);
+  addFlatTriangle(vertices, {left, top}, {right, bottom}, {left, bottom}, 0, kLegendPanel);
+  for (std::size_t i = 0; i < legend.size(); ++i) {
+    const LegendRow& row = legend[i];
+    const double row_top = top + pad + line * static_cast<double>(i);
+    double pen_x = left + pad;
+    if (row.swatch) {
+      // In pixel space with y down, a sphere seen from +z looks lit from the lower left; the
+      // swatch only needs to read as a ball of that colour.
+      addDisc(vertices,
+              Disc{Eigen::Vector3d(pen_x + radius, row_top + line / 2, 0), radius, row.colour,
+                   row.striped ? DiscStyle::StripedBall : DiscStyle::Ball, 0});
+      pen_x += 2 * radius + pad;
+    }
+    const double baseline = std::round(row_top + (line + atlas.ascender()) / 2 - line * 0.1);
+    pen_x = std::round(pen_x);
+    for (char c : row.text) {
+      const Glyph& g = atlas.glyph(c);
+      if (g.width > 0 && g.height > 0) {
+        const double x0 = pen_x + g.bearing_x, y0 = baseline - g.bearing_y;
+        const double x1 = x0 + g.width, y1 = y0 + g.height;
+        const float u0 = static_cast<float>(g.x) / atlas.width();
+        const float v0 = static_cast<float>(g.y) / atlas.height();
+        const float u1 = static_cast<float>(g.x + g.width) / atlas.width();
+        const float v1 = static_cast<float>(g.y + g.height) / atlas.height();
+        const auto corner = [&](double x, double y, float u, float v) {
+          put(vertices, Eigen::Vector3d(x, y, 0), kLegendText, u, v, kText, 0, 0);
+        };
+        corner(x0, y0, u0, v0);
+        corner(x1, y0, u1, v0);
+        corner(x1, y1, u1, v1);
+        corner(x0, y0, u0, v0);
+        corner(x1, y1, u1, v1);
+        corner(x0, y1, u0, v1);
+      }
+      pen_x += g.advance;
+    }
+  }
+  // Pixels to clip space: x from [0, W] to [-1, 1], y from [0, H] (down) to [1, -1].
+  Eigen::Matrix4f projection = Eigen::Matrix4f::Identity();
+  projection(0, 0) = 2.0f / static_cast<float>(width_px_);
+  projection(0, 3) = -1.0f;
+  projection(1, 1) = -2.0f / static_cast<float>(height_px_);
+  projection(1, 3) = 1.0f;
+  const Eigen::Matrix4f view = Eigen::Matrix4f::Identity();
+  gl_.ActiveTexture(GL_TEXTURE0);
+  gl_.BindTexture(GL_TEXTURE_2D, atlas_texture_);
+  drawVertices(vertices.data(), vertices.size(), view.data(), projection.data());
+}
+
+int legendTextSize(int image_height_px) {
+  return std::clamp(image_height_px / kLegendLinesPerImage, kMinLegendTextSize_px,
+                    kMaxLegendTextSize_px);
 }
 
 Image GlRenderer::readImage() {

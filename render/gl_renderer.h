@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "render/draw_items.h"
 #include "render/gl_context.h"
 #include "render/gl_functions.h"
+#include "render/glyph_atlas.h"
 
 namespace baize::render {
 
@@ -28,6 +30,15 @@ struct Image {
 
 // Samples per pixel asked for (fewer when the context offers fewer).
 constexpr int kWantedSamples = 8;
+
+// The legend's text height: the image height over this, within the limits below (px).
+constexpr int kLegendLinesPerImage = 40;
+constexpr int kMinLegendTextSize_px = 11;
+constexpr int kMaxLegendTextSize_px = 40;
+constexpr int kLegendMargin_px = 10;  // from the image's corner to the legend's panel
+
+// The legend's text size for an image of this height, px.
+int legendTextSize(int image_height_px);
 
 class GlRenderer {
  public:
@@ -51,11 +62,17 @@ class GlRenderer {
  private:
   void resize(int width_px, int height_px);
   void releaseFramebuffers();
+  void drawLegend(const std::vector<LegendRow>& legend);
+  void drawVertices(const void* vertices, std::size_t count, const float* view,
+                    const float* projection);
 
   GlFunctions gl_;
   GLuint program_ = 0;
   GLint view_location_ = -1;
   GLint projection_location_ = -1;
+  GLint atlas_location_ = -1;
+  std::unique_ptr<GlyphAtlas> atlas_;  // made at the first legend, remade when its size changes
+  GLuint atlas_texture_ = 0;
   GLuint vertex_array_ = 0;
   GLuint vertex_buffer_ = 0;
   GLuint multisample_framebuffer_ = 0, multisample_colour_ = 0;

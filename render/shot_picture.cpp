@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -128,6 +130,32 @@ double pixelSizeFor(const engine::Table& table, int width_px, int height_px) {
   return std::max(outer_length_m / std::max(width_px, 1), outer_width_m / std::max(height_px, 1));
 }
 
+double firstSpeed(const engine::Trajectory& trajectory) {
+  for (const engine::TrajectoryPiece& piece : trajectory) {
+    if (piece.pocketed) break;
+    const double speed = piece.state.velocity.head<2>().norm();
+    if (speed > physics::kSpeedEpsilon_mps) return speed;
+  }
+  return 0;
+}
+
+std::optional<std::string> legendText(const std::string& id, const engine::Trajectory& trajectory) {
+  for (const engine::TrajectoryPiece& piece : trajectory) {
+    if (piece.pocketed) break;
+    const Eigen::Vector3d& v = piece.state.velocity;
+    const double speed = v.head<2>().norm();
+    if (speed <= physics::kSpeedEpsilon_mps) continue;
+    const Eigen::Vector3d across(-v.y() / speed, v.x() / speed, 0);  // z x (v / |v|)
+    std::ostringstream text;
+    // Spins are rounded to whole rad/s first, and + 0.0 turns -0 into 0.
+    text << std::fixed << id << ": " << std::setprecision(2) << speed << " m/s, roll "
+         << std::setprecision(0) << std::round(piece.state.angular_velocity.dot(across)) + 0.0
+         << " rad/s, side " << std::round(piece.state.angular_velocity.z()) + 0.0 << " rad/s";
+    return text.str();
+  }
+  return std::nullopt;
+}
+
 Picture buildShotPicture(const ShotRecord& shot, const PictureOptions& options) {
   if (!(options.time_s >= 0)) {
     throw std::invalid_argument("picture time " + physics::valueText(options.time_s) +
@@ -213,6 +241,30 @@ Picture buildShotPicture(const ShotRecord& shot, const PictureOptions& options) 
     picture.items.push_back(Disc{Eigen::Vector3d(p.x(), p.y(), radius_m), radius_m,
                                  colourFromHex(spec.colour),
                                  spec.stripe ? DiscStyle::StripedBall : DiscStyle::Ball, 0});
+  }
+  if (options.legend) {
+    int nudged = 0;
+    for (std::size_t i = 0; i < shot.trajectories.size(); ++i) {
+      const std::optional<std::string> text = legendText(shot.ball_ids[i], shot.trajectories[i]);
+      if (!text) continue;
+      if (firstSpeed(shot.trajectories[i]) < kLegendMinSpeed_mps) {
+        ++nudged;
+        continue;
+      }
+      const engine::BallSpec& spec = shot.ball_set.ball(shot.ball_ids[i]);
+      picture.legend.push_back(LegendRow{true, colourFromHex(spec.colour), spec.stripe, *text});
+    }
+    if (nudged > 0) {
+      picture.legend.push_back(LegendRow{false,
+                                         {},
+                                         false,
+                                         std::to_string(nudged) + " more " +
+                                             (nudged == 1 ? "ball" : "balls") +
+                                             " nudged (first speed under 0.05 m/s)"});
+    }
+    picture.legend.push_back(LegendRow{false, {}, false, "solid: rolling, dashed: sliding"});
+    picture.legend.push_back(
+        LegendRow{false, {}, false, "dark ring: ball-ball, orange: cushion, red ring: pocket"});
   }
   return picture;
 }

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <limits>
+#include <optional>
+#include <string>
 
 #include "render/draw_items.h"
 #include "render/shot_record.h"
@@ -15,7 +17,8 @@ struct PictureOptions {
   // Balls are drawn where they are at this time, s; traces and markers run up to it. Infinity (the
   // default) means the end of the shot.
   double time_s = std::numeric_limits<double>::infinity();
-  bool traces = true;  // traces, event markers and start rings
+  bool traces = true;   // traces, event markers and start rings
+  bool legend = false;  // a legend: each ball that moves, its speed and spin, and the key
   // About the size of one pixel on the cloth, m: sets line widths, marker sizes and how finely the
   // traces are sampled. pixelSizeFor() gives it for an image.
   double pixel_size_m = 0.002;
@@ -33,6 +36,10 @@ constexpr double kDashOff_px = 6.0;
 constexpr double kBallBallMarkerRadius_px = 6.0;
 constexpr double kCushionMarkerRadius_px = 4.0;
 constexpr double kPocketMarkerRadius_px = 8.0;
+// Balls first set in motion slower than this get no legend row of their own but one shared line
+// ("N more balls nudged"), m/s: in a frozen rack most balls only shiver, and rows for them would
+// hide the table.
+constexpr double kLegendMinSpeed_mps = 0.05;
 // A ball that moved less than this from its start gets no start ring, m (well under a pixel).
 constexpr double kMovedDistance_m = 1e-4;
 
@@ -44,6 +51,14 @@ Rgba pocketMarkerColour();
 
 // The colour a ball of the set is drawn in (its main colour; white for the cue ball).
 Rgba ballColour(const engine::BallSet& set, const std::string& id);
+
+// The legend's line for a ball: its id, then the speed and spin it had when it was first set in
+// motion (for the cue ball, as struck): "cue: 7.84 m/s, roll -12 rad/s, side 0 rad/s", where roll
+// is the spin about the horizontal axis across the motion (+: topspin) and side the spin about the
+// vertical (+: counterclockwise seen from above). Nothing for a ball that never moves.
+std::optional<std::string> legendText(const std::string& id, const engine::Trajectory& trajectory);
+// The speed a ball had when it was first set in motion, m/s (0 for a ball that never moves).
+double firstSpeed(const engine::Trajectory& trajectory);
 
 Picture buildShotPicture(const ShotRecord& shot, const PictureOptions& options);
 

@@ -132,6 +132,33 @@ TEST(GlRenderer, ShadedBallIsLitInItsColourAndDarkerTowardsItsEdge) {
   EXPECT_LT(lower_right[0], middle[0]);
 }
 
+TEST(GlRenderer, LegendPanelHoldsTheSwatchColourAndLightText) {
+  Picture picture = emptyFrame();
+  picture.background = Rgba{0.2f, 0.5f, 0.8f, 1};  // light enough for the dark panel to show
+  picture.legend = {LegendRow{true, kRed, false, "MMMM"}, LegendRow{false, {}, false, "key"}};
+  GlRenderer& renderer = testRenderer();
+  constexpr int kWidth = 400, kHeight = 400;
+  renderer.draw(picture, cameraFor(picture, View::Top, kWidth, kHeight));
+  const Image image = renderer.readImage();
+  const int text_size = legendTextSize(kHeight);
+  // The panel darkens the corner; outside it the background is untouched.
+  const std::uint8_t* corner = image.pixel(kLegendMargin_px + 2, kLegendMargin_px + 2);
+  EXPECT_LT(corner[2], channel(0.8f) - 60);
+  EXPECT_LE(colourDistance(image.pixel(kWidth - 5, kHeight - 5), picture.background),
+            kChannelTolerance);
+  // Red swatch somewhere in the first row's left part; near-white text ink right of it.
+  bool red = false, ink = false;
+  for (int y = kLegendMargin_px; y < kLegendMargin_px + 2 * text_size; ++y) {
+    for (int x = kLegendMargin_px; x < kLegendMargin_px + 8 * text_size; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      red = red || (p[0] > 150 && p[1] < 60 && p[2] < 60);
+      ink = ink || (p[0] > 200 && p[1] > 200 && p[2] > 200);
+    }
+  }
+  EXPECT_TRUE(red);
+  EXPECT_TRUE(ink);
+}
+
 TEST(GlRenderer, SameInputGivesTheSameBytes) {
   const engine::Scene scene =
       engine::loadScene(engine::assetsDirectory() + "/scenes/draw-shot.json");

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 #include "engine/scene.h"
@@ -177,6 +179,30 @@ TEST(ShotPicture, NineBallBreakHasAMarkerPerEventAndABallPerBallLeft) {
     for (const Disc* d : balls) nearest = std::min(nearest, (d->centre_m.head<2>() - p).norm());
     EXPECT_LT(nearest, kPositionTolerance_m);
   }
+}
+
+TEST(ShotPicture, LegendGivesEachMovingBallItsFirstSpeedAndSpin) {
+  const double R = engine::builtinBallSet("pool").radius_m;
+  physics::BallState topspin = rollingAlongX(-0.5, 0.0, 0.5, R);  // rolling: roll = v / R
+  topspin.angular_velocity.z() = -3.0;
+  const ShotRecord shot = loneBalls({{"cue", topspin},
+                                     {"5", rollingAlongX(0.5, 0.3, 0.01, R)},  // nudged
+                                     {"8", physics::BallState{}}});            // never moves
+  PictureOptions options;
+  EXPECT_TRUE(buildShotPicture(shot, options).legend.empty());
+  options.legend = true;
+  const Picture picture = buildShotPicture(shot, options);
+  ASSERT_EQ(picture.legend.size(), 4u);  // cue, the nudged line, the two key lines
+  EXPECT_TRUE(picture.legend[0].swatch);
+  EXPECT_EQ(picture.legend[0].colour, ballColour(shot.ball_set, "cue"));
+  // 0.5 / 0.028575 = 17.5 rad/s rounds to 17 or 18; check the exact text.
+  std::ostringstream roll;
+  roll << std::fixed << std::setprecision(0) << std::round(0.5 / R);
+  EXPECT_EQ(picture.legend[0].text, "cue: 0.50 m/s, roll " + roll.str() + " rad/s, side -3 rad/s");
+  EXPECT_FALSE(picture.legend[1].swatch);
+  EXPECT_EQ(picture.legend[1].text.rfind("1 more ball nudged", 0), 0u) << picture.legend[1].text;
+  EXPECT_FALSE(legendText("8", shot.trajectories[2]).has_value());
+  EXPECT_DOUBLE_EQ(firstSpeed(shot.trajectories[1]), 0.01);
 }
 
 TEST(ShotPicture, BadOptionsAreRefused) {

@@ -46,6 +46,13 @@ cmp -s "$work/a.png" "$work/at.png" && fail "--at 0.05 drew the end of the shot"
   fail "--view angled exited $?"
 cmp -s "$work/a.png" "$work/angled.png" && fail "the angled view drew the top view"
 
+# --legend adds a legend (a different picture), the same bytes each time.
+"$baize" render "$scene" --png "$work/legend.png" --width 640 --height 320 --legend >/dev/null ||
+  fail "--legend exited $?"
+"$baize" render "$scene" --png "$work/legend2.png" --width 640 --height 320 --legend >/dev/null
+cmp -s "$work/a.png" "$work/legend.png" && fail "--legend drew no legend"
+cmp -s "$work/legend.png" "$work/legend2.png" || fail "two legend pictures differ"
+
 # --frames: one frame per 1/fps s of the shot and one at rest, numbered from 0, each of the size asked.
 end=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["end_time_s"])' "$work/result.json")
 out=$("$baize" render "$work/result.json" --frames "$work/frames" --fps 2 --width 64 --height 32) ||

@@ -51,6 +51,8 @@ void addPictureFlags(CLI::App& command, PictureFlags& flags) {
   command.add_option("--width", flags.width_px, "picture width, px (default 1600)");
   command.add_option("--height", flags.height_px, "picture height, px (default 800)");
   command.add_option("--view", flags.view, "top (default) or angled");
+  command.add_flag("--legend", flags.legend,
+                   "add a legend: each ball that moves with its speed and spin, and the key");
   command.add_option("--at", flags.at_s,
                      "draw the balls at this time, s, and the traces up to it (default: the end)");
   command.add_option("--frames", flags.frames_dir,
@@ -92,6 +94,7 @@ void writePictures(const render::ShotRecord& shot, const PictureFlags& flags) {
   const render::View view = render::viewNamed(flags.view);
   render::PictureOptions options;
   options.pixel_size_m = render::pixelSizeFor(shot.table, flags.width_px, flags.height_px);
+  options.legend = flags.legend;
   const auto draw = [&](double time_s, const std::string& path) {
     options.time_s = time_s;
     const render::Picture picture = render::buildShotPicture(shot, options);

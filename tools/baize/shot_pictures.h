@@ -1,6 +1,6 @@
 // The picture flags shared by `baize render` and `baize simulate` (--png, --width, --height,
-// --view, --at, --frames, --fps) and writing the pictures they ask for: one PNG of the shot at a
-// time (the end by default) and/or numbered PNG frames of it in real time.
+// --view, --legend, --at, --frames, --fps) and writing the pictures they ask for: one PNG of the
+// shot at a time (the end by default) and/or numbered PNG frames of it in real time.
 #pragma once
 
 #include <memory>
@@ -20,6 +20,7 @@ struct PictureFlags {
   int width_px = 1600;
   int height_px = 800;
   std::string view = "top";
+  bool legend = false;
   std::optional<double> at_s;  // draw the balls at this time (default: the end of the shot)
   std::string frames_dir;      // numbered frames frame_00000.png ... when set
   double fps = 30;

@@ -130,6 +130,9 @@ class Viewer {
           case SDLK_t:
             playback_.toggleTraces();
             break;
+          case SDLK_l:
+            legend_ = !legend_;
+            break;
           case SDLK_r:
             playback_.restart();
             break;
@@ -195,6 +198,7 @@ class Viewer {
     render::PictureOptions options;
     options.time_s = playback_.time_s();
     options.traces = playback_.traces();
+    options.legend = legend_;
     options.pixel_size_m = render::pixelSizeFor(shot_.table, w, h);
     render::Picture picture = render::buildShotPicture(shot_, options);
     if (canAim()) {
@@ -235,6 +239,7 @@ class Viewer {
   Playback playback_;
   render::Camera camera_;
   std::string title_;
+  bool legend_ = false;
 };
 
 int runViewer(const ViewFlags& flags) {
