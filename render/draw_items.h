@@ -50,7 +50,7 @@ struct Disc {
 
 using DrawItem = std::variant<Mesh, Stroke, Disc>;
 
-// One row of the legend the renderer lays out in the image's top-left corner: a ball swatch (when
+// One row of the legend the renderer lays out in an image corner: a ball swatch (when
 // `swatch`) and a line of text (printable ASCII).
 struct LegendRow {
   bool swatch = false;

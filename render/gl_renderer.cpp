@@ -290,7 +290,7 @@ void GlRenderer::draw(const Picture& picture, const Camera& camera) {
 
   const Eigen::Matrix4f view = toFloat(camera.view), projection = toFloat(camera.projection);
   drawVertices(vertices.data(), vertices.size(), view.data(), projection.data());
-  if (!picture.legend.empty()) drawLegend(picture.legend);
+  if (!picture.legend.empty()) drawLegend(picture, camera);
 
   gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_);
   gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_);
@@ -317,7 +317,8 @@ void GlRenderer::drawVertices(const void* vertices, std::size_t count, const flo
 
 // The legend in pixel coordinates (x right, y down from the top-left corner): a translucent
 // panel, then per row a shaded ball swatch and the text.
-void GlRenderer::drawLegend(const std::vector<LegendRow>& legend) {
+void GlRenderer::drawLegend(const Picture& picture, const Camera& camera) {
+  const std::vector<LegendRow>& legend = picture.legend;
   const int text_size = legendTextSize(height_px_);
   if (!atlas_ || atlas_->pixelSize() != text_size) {
     atlas_ = std::make_unique<GlyphAtlas>(defaultFontPath(), text_size);
@@ -341,9 +342,37 @@ void GlRenderer::drawLegend(const std::vector<LegendRow>& legend) {
     text_width = std::max<double>(text_width,
                                   atlas.textWidth(row.text) + (row.swatch ? 2 * radius + pad : 0));
   }
-  const double left = kLegendMargin_px, top = kLegendMargin_px;
-  const double right = left + 2 * pad + text_width;
-  const double bottom = top + 2 * pad + line * static_cast<double>(legend.size());
+  const double panel_width = 2 * pad + text_width;
+  const double panel_height = 2 * pad + line * static_cast<double>(legend.size());
+  // The corner where the panel hides least: fewest trace and marking points (sampled about a pixel
+  // apart, so this measures line length), each ball and marker counting as much as a ball's width
+  // of line. Ties go to the earlier corner: top left, top right, bottom left, bottom right.
+  const Eigen::Vector2d corners[4] = {
+      {kLegendMargin_px, kLegendMargin_px},
+      {width_px_ - kLegendMargin_px - panel_width, kLegendMargin_px},
+      {kLegendMargin_px, height_px_ - kLegendMargin_px - panel_height},
+      {width_px_ - kLegendMargin_px - panel_width, height_px_ - kLegendMargin_px - panel_height}};
+  double hidden[4] = {0, 0, 0, 0};
+  const auto count = [&](const Eigen::Vector3d& point_m, double weight) {
+    const Eigen::Vector2d p = camera.pixelOf(point_m);
+    for (int k = 0; k < 4; ++k) {
+      if (p.x() >= corners[k].x() && p.x() <= corners[k].x() + panel_width &&
+          p.y() >= corners[k].y() && p.y() <= corners[k].y() + panel_height) {
+        hidden[k] += weight;
+      }
+    }
+  };
+  for (const DrawItem& item : picture.items) {
+    if (const Stroke* stroke = std::get_if<Stroke>(&item)) {
+      for (const Eigen::Vector2d& p : stroke->points_m) count({p.x(), p.y(), stroke->z_m}, 1);
+    } else if (const Disc* disc = std::get_if<Disc>(&item)) {
+      const Eigen::Vector3d edge = disc->centre_m + Eigen::Vector3d(disc->radius_m, 0, 0);
+      count(disc->centre_m, 2 * (camera.pixelOf(edge) - camera.pixelOf(disc->centre_m)).norm());
+    }
+  }
+  const int best = static_cast<int>(std::min_element(hidden, hidden + 4) - hidden);
+  const double left = corners[best].x(), top = corners[best].y();
+  const double right = left + panel_width, bottom = top + panel_height;
 
   std::vector<Vertex> vertices;
   addFlatTriangle(vertices, {left, top}, {right, top}, {right, bottom}, 0, kLegendPanel);

@@ -62,7 +62,7 @@ class GlRenderer {
  private:
   void resize(int width_px, int height_px);
   void releaseFramebuffers();
-  void drawLegend(const std::vector<LegendRow>& legend);
+  void drawLegend(const Picture& picture, const Camera& camera);
   void drawVertices(const void* vertices, std::size_t count, const float* view,
                     const float* projection);
 
