@@ -46,6 +46,7 @@ struct Disc {
   Rgba colour;
   DiscStyle style = DiscStyle::Flat;
   double inner_fraction = 0;  // Ring only, in [0, 1)
+  std::string label;          // Ball, StripedBall: the printed number (printable ASCII), or none
 };
 
 using DrawItem = std::variant<Mesh, Stroke, Disc>;

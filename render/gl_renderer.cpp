@@ -15,8 +15,18 @@ enum ShapeKind : int {
   kFlatRing = 2,
   kBall = 3,  // a quad facing the camera, shaded as a sphere
   kStripedBall = 4,
-  kText = 5,  // a glyph: a quad in the plane whose coverage comes from the atlas texture
+  kText = 5,           // a glyph: a quad in the plane whose coverage comes from the atlas texture
+  kBallLabelDisc = 6,  // a flat disc facing the camera, on a ball (the white circle of a number)
+  kBallLabelText = 7,  // a glyph facing the camera at a ball's centre: `local` is its offset (m)
 };
+
+// Numbers on balls: the white circle's radius and the font's em size, in ball radii (a two-digit
+// number then fits inside the circle); below this many pixels of ball radius they are left out.
+constexpr double kLabelDiscRadius = 0.5;
+constexpr double kLabelEmSize = 0.68;
+constexpr double kMinLabelledBallRadius_px = 6.0;
+const Rgba kLabelDisc{0.98f, 0.98f, 0.96f, 1.0f};
+const Rgba kLabelText{0.07f, 0.07f, 0.07f, 1.0f};
 
 // Legend layout, in units of the text size: padding inside the panel, the swatch's radius.
 constexpr double kLegendPadding = 0.5;
@@ -51,15 +61,18 @@ void main() {
   vec4 eye;
   if (kind == 1 || kind == 2) {
     eye = view * vec4(position + vec3(local * shape.y, 0.0), 1.0);  // lies on the cloth
-  } else if (kind == 3 || kind == 4) {
+  } else if (kind == 3 || kind == 4 || kind == 6) {
     eye = view * vec4(position, 1.0);  // a sphere's outline faces the camera
     eye.xy += local * shape.y;
+  } else if (kind == 7) {
+    eye = view * vec4(position, 1.0);
+    eye.xy += local;
   } else {
     eye = view * vec4(position, 1.0);
   }
   gl_Position = projection * eye;
   v_colour = colour;
-  v_local = local;
+  v_local = kind == 7 ? shape.yz : local;  // a label glyph's atlas coordinates
   v_kind = kind;
   v_inner = shape.z;
 }
@@ -77,7 +90,7 @@ void main() {
     fragment = v_colour;
     return;
   }
-  if (v_kind == 5) {
+  if (v_kind == 5 || v_kind == 7) {
     fragment = vec4(v_colour.rgb, v_colour.a * texture(atlas, v_local).r);
     return;
   }
@@ -142,6 +155,40 @@ void addDisc(std::vector<Vertex>& out, const Disc& disc) {
   for (const auto& corner : corners) {
     put(out, disc.centre_m, disc.colour, corner[0], corner[1], kind, disc.radius_m,
         disc.inner_fraction);
+  }
+}
+
+// A ball's number: a white circle facing the camera and the digits centred on it.
+void addBallLabel(std::vector<Vertex>& out, const Disc& ball, const GlyphAtlas& atlas) {
+  const float e = kDiscQuadExtent;
+  const float corners[6][2] = {{-e, -e}, {e, -e}, {e, e}, {-e, -e}, {e, e}, {-e, e}};
+  for (const auto& corner : corners) {
+    put(out, ball.centre_m, kLabelDisc, corner[0], corner[1], kBallLabelDisc,
+        kLabelDiscRadius * ball.radius_m, 0);
+  }
+  const double metres_per_px = kLabelEmSize * ball.radius_m / atlas.pixelSize();
+  const double cap_height_px = atlas.glyph('0').bearing_y;
+  double pen = -0.5 * atlas.textWidth(ball.label);
+  const double baseline = -0.5 * cap_height_px;
+  for (char c : ball.label) {
+    const Glyph& g = atlas.glyph(c);
+    const double x0 = pen + g.bearing_x, x1 = x0 + g.width;
+    const double y1 = baseline + g.bearing_y, y0 = y1 - g.height;  // eye space: y up
+    const float u0 = static_cast<float>(g.x) / atlas.width();
+    const float u1 = static_cast<float>(g.x + g.width) / atlas.width();
+    const float v_top = static_cast<float>(g.y) / atlas.height();
+    const float v_bottom = static_cast<float>(g.y + g.height) / atlas.height();
+    const auto corner = [&](double x, double y, float u, float v) {
+      put(out, ball.centre_m, kLabelText, static_cast<float>(x * metres_per_px),
+          static_cast<float>(y * metres_per_px), kBallLabelText, u, v);
+    };
+    corner(x0, y1, u0, v_top);
+    corner(x1, y1, u1, v_top);
+    corner(x1, y0, u1, v_bottom);
+    corner(x0, y1, u0, v_top);
+    corner(x1, y0, u1, v_bottom);
+    corner(x0, y0, u0, v_bottom);
+    pen += g.advance;
   }
 }
 
@@ -212,6 +259,7 @@ GlRenderer::GlRenderer(const GlContext& context) : gl_(loadGlFunctions(context))
 GlRenderer::~GlRenderer() {
   releaseFramebuffers();
   if (atlas_texture_ != 0) gl_.DeleteTextures(1, &atlas_texture_);
+  if (label_texture_ != 0) gl_.DeleteTextures(1, &label_texture_);
   gl_.DeleteBuffers(1, &vertex_buffer_);
   gl_.DeleteVertexArrays(1, &vertex_array_);
   gl_.DeleteProgram(program_);
@@ -277,7 +325,25 @@ void GlRenderer::draw(const Picture& picture, const Camera& camera) {
   const auto depth = [&](const Disc* d) { return (camera.view * d->centre_m.homogeneous()).z(); };
   std::stable_sort(balls.begin(), balls.end(),
                    [&](const Disc* a, const Disc* b) { return depth(a) < depth(b); });
-  for (const Disc* ball : balls) addDisc(vertices, *ball);
+  // Numbers need a font sized to the balls as drawn (the nearest ball in the angled view).
+  double ball_radius_px = 0;
+  for (const Disc* ball : balls) {
+    if (ball->label.empty()) continue;
+    const Eigen::Vector3d side = camera.view.block<1, 3>(0, 0).transpose() * ball->radius_m;
+    ball_radius_px =
+        std::max(ball_radius_px,
+                 (camera.pixelOf(ball->centre_m + side) - camera.pixelOf(ball->centre_m)).norm());
+  }
+  const bool labels = ball_radius_px >= kMinLabelledBallRadius_px;
+  if (labels) {
+    const int size = std::clamp(static_cast<int>(std::lround(kLabelEmSize * ball_radius_px)),
+                                kMinAtlasTextSize_px, kMaxAtlasTextSize_px);
+    useAtlas(label_atlas_, label_texture_, size);
+  }
+  for (const Disc* ball : balls) {
+    addDisc(vertices, *ball);
+    if (labels && !ball->label.empty()) addBallLabel(vertices, *ball, *label_atlas_);
+  }
 
   gl_.BindFramebuffer(GL_FRAMEBUFFER, multisample_framebuffer_);
   gl_.Viewport(0, 0, camera.width_px, camera.height_px);
@@ -320,19 +386,7 @@ void GlRenderer::drawVertices(const void* vertices, std::size_t count, const flo
 void GlRenderer::drawLegend(const Picture& picture, const Camera& camera) {
   const std::vector<LegendRow>& legend = picture.legend;
   const int text_size = legendTextSize(height_px_);
-  if (!atlas_ || atlas_->pixelSize() != text_size) {
-    atlas_ = std::make_unique<GlyphAtlas>(defaultFontPath(), text_size);
-    if (atlas_texture_ == 0) gl_.GenTextures(1, &atlas_texture_);
-    gl_.ActiveTexture(GL_TEXTURE0);
-    gl_.BindTexture(GL_TEXTURE_2D, atlas_texture_);
-    gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas_->width(), atlas_->height(), 0, GL_RED,
-                   GL_UNSIGNED_BYTE, atlas_->coverage().data());
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
+  useAtlas(atlas_, atlas_texture_, text_size);
   const GlyphAtlas& atlas = *atlas_;
   const double line = atlas.lineHeight();
   const double pad = kLegendPadding * text_size;
@@ -384,9 +438,12 @@ void GlRenderer::drawLegend(const Picture& picture, const Camera& camera) {
     if (row.swatch) {
       // In pixel space with y down, a sphere seen from +z looks lit from the lower left; the
       // swatch only needs to read as a ball of that colour.
-      addDisc(vertices,
-              Disc{Eigen::Vector3d(pen_x + radius, row_top + line / 2, 0), radius, row.colour,
-                   row.striped ? DiscStyle::StripedBall : DiscStyle::Ball, 0});
+      addDisc(vertices, Disc{Eigen::Vector3d(pen_x + radius, row_top + line / 2, 0),
+                             radius,
+                             row.colour,
+                             row.striped ? DiscStyle::StripedBall : DiscStyle::Ball,
+                             0,
+                             {}});
       pen_x += 2 * radius + pad;
     }
     const double baseline = std::round(row_top + (line + atlas.ascender()) / 2 - line * 0.1);
@@ -420,9 +477,26 @@ void GlRenderer::drawLegend(const Picture& picture, const Camera& camera) {
   projection(1, 1) = -2.0f / static_cast<float>(height_px_);
   projection(1, 3) = 1.0f;
   const Eigen::Matrix4f view = Eigen::Matrix4f::Identity();
-  gl_.ActiveTexture(GL_TEXTURE0);
-  gl_.BindTexture(GL_TEXTURE_2D, atlas_texture_);
   drawVertices(vertices.data(), vertices.size(), view.data(), projection.data());
+}
+
+void GlRenderer::useAtlas(std::unique_ptr<GlyphAtlas>& atlas, GLuint& texture, int size) {
+  gl_.ActiveTexture(GL_TEXTURE0);
+  if (atlas && atlas->pixelSize() == size) {
+    gl_.BindTexture(GL_TEXTURE_2D, texture);
+    return;
+  }
+  atlas = std::make_unique<GlyphAtlas>(defaultFontPath(), size);
+  if (texture == 0) gl_.GenTextures(1, &texture);
+  gl_.BindTexture(GL_TEXTURE_2D, texture);
+  gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas->width(), atlas->height(), 0, GL_RED,
+                 GL_UNSIGNED_BYTE, atlas->coverage().data());
+  // Legend glyphs land on whole pixels; ball numbers are scaled in the angled view.
+  gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 int legendTextSize(int image_height_px) {

@@ -63,6 +63,8 @@ class GlRenderer {
   void resize(int width_px, int height_px);
   void releaseFramebuffers();
   void drawLegend(const Picture& picture, const Camera& camera);
+  // Makes `atlas` a font of this size (reusing it when it is one) and binds its texture.
+  void useAtlas(std::unique_ptr<GlyphAtlas>& atlas, GLuint& texture, int size);
   void drawVertices(const void* vertices, std::size_t count, const float* view,
                     const float* projection);
 
@@ -73,6 +75,8 @@ class GlRenderer {
   GLint atlas_location_ = -1;
   std::unique_ptr<GlyphAtlas> atlas_;  // made at the first legend, remade when its size changes
   GLuint atlas_texture_ = 0;
+  std::unique_ptr<GlyphAtlas> label_atlas_;  // numbers on balls, sized to the balls as drawn
+  GLuint label_texture_ = 0;
   GLuint vertex_array_ = 0;
   GLuint vertex_buffer_ = 0;
   GLuint multisample_framebuffer_ = 0, multisample_colour_ = 0;

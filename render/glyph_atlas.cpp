@@ -12,8 +12,6 @@ namespace {
 
 constexpr int kFirstCharacter = 32;
 constexpr int kLastCharacter = 126;
-constexpr int kMinPixelSize = 6;
-constexpr int kMaxPixelSize = 200;
 // Empty pixels between glyphs in the atlas, so that sampling one never picks up its neighbour.
 constexpr int kGlyphPadding_px = 1;
 
@@ -22,7 +20,7 @@ constexpr int kGlyphPadding_px = 1;
 std::string defaultFontPath() { return BAIZE_DEFAULT_FONT; }
 
 GlyphAtlas::GlyphAtlas(const std::string& font_path, int pixel_size) : pixel_size_(pixel_size) {
-  if (pixel_size < kMinPixelSize || pixel_size > kMaxPixelSize) {
+  if (pixel_size < kMinAtlasTextSize_px || pixel_size > kMaxAtlasTextSize_px) {
     throw std::invalid_argument("text size " + std::to_string(pixel_size) +
                                 " px is not allowed: it must lie in [6, 200]");
   }

@@ -10,6 +10,10 @@
 
 namespace baize::render {
 
+// Text sizes an atlas accepts, px.
+constexpr int kMinAtlasTextSize_px = 6;
+constexpr int kMaxAtlasTextSize_px = 200;
+
 // The font used when none is given.
 std::string defaultFontPath();
 

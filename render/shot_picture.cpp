@@ -111,7 +111,8 @@ std::vector<std::vector<Eigen::Vector2d>> dashes(const std::vector<Eigen::Vector
 
 Disc flatDisc(const Eigen::Vector2d& centre, double radius, const Rgba& colour, DiscStyle style,
               double inner_fraction = 0) {
-  return Disc{Eigen::Vector3d(centre.x(), centre.y(), 0), radius, colour, style, inner_fraction};
+  return Disc{
+      Eigen::Vector3d(centre.x(), centre.y(), 0), radius, colour, style, inner_fraction, {}};
 }
 
 }  // namespace
@@ -240,7 +241,8 @@ Picture buildShotPicture(const ShotRecord& shot, const PictureOptions& options) 
         engine::sampleTrajectory(shot.cloth, shot.trajectories[i], t_end).position;
     picture.items.push_back(Disc{Eigen::Vector3d(p.x(), p.y(), radius_m), radius_m,
                                  colourFromHex(spec.colour),
-                                 spec.stripe ? DiscStyle::StripedBall : DiscStyle::Ball, 0});
+                                 spec.stripe ? DiscStyle::StripedBall : DiscStyle::Ball, 0,
+                                 spec.number > 0 ? std::to_string(spec.number) : std::string()});
   }
   if (options.legend) {
     int nudged = 0;

@@ -22,7 +22,7 @@ Mesh rectangle(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Rgba&
 }
 
 Disc flatDisc(const Eigen::Vector2d& centre, double radius, const Rgba& colour) {
-  return Disc{Eigen::Vector3d(centre.x(), centre.y(), 0), radius, colour, DiscStyle::Flat, 0};
+  return Disc{Eigen::Vector3d(centre.x(), centre.y(), 0), radius, colour, DiscStyle::Flat, 0, {}};
 }
 
 // Appends `piece` to `outline`, reversed when its far end is nearer the outline's last point.

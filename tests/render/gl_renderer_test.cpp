@@ -27,7 +27,7 @@ Picture emptyFrame() {
 }
 
 Disc flat(const Eigen::Vector2d& at, double radius_m, const Rgba& colour) {
-  return Disc{Eigen::Vector3d(at.x(), at.y(), 0), radius_m, colour, DiscStyle::Flat, 0};
+  return Disc{Eigen::Vector3d(at.x(), at.y(), 0), radius_m, colour, DiscStyle::Flat, 0, {}};
 }
 
 const std::uint8_t* pixelAt(const Image& image, const Eigen::Vector2d& p) {
@@ -119,7 +119,7 @@ TEST(GlRenderer, RowsAreNotFlippedABallNearThePlusYCushionIsNearTheTop) {
 
 TEST(GlRenderer, ShadedBallIsLitInItsColourAndDarkerTowardsItsEdge) {
   Picture picture = emptyFrame();
-  picture.items.push_back(Disc{Eigen::Vector3d(0, 0, 0.05), 0.05, kRed, DiscStyle::Ball, 0});
+  picture.items.push_back(Disc{Eigen::Vector3d(0, 0, 0.05), 0.05, kRed, DiscStyle::Ball, 0, {}});
   const Camera camera = cameraFor(picture, View::Top, 400, 200);
   GlRenderer& renderer = testRenderer();
   renderer.draw(picture, camera);
@@ -157,6 +157,42 @@ TEST(GlRenderer, LegendPanelHoldsTheSwatchColourAndLightText) {
   }
   EXPECT_TRUE(red);
   EXPECT_TRUE(ink);
+}
+
+TEST(GlRenderer, NumberedBallShowsAWhiteCircleWithDarkDigitsWhenLargeEnough) {
+  const Rgba black{0.0f, 0.0f, 0.0f, 1};
+  GlRenderer& renderer = testRenderer();
+  const auto draw = [&](double radius_m) {
+    Picture picture = emptyFrame();
+    picture.items.push_back(
+        Disc{Eigen::Vector3d(0, 0, radius_m), radius_m, black, DiscStyle::Ball, 0, "8"});
+    renderer.draw(picture, cameraFor(picture, View::Top, 400, 200));  // 200 px per m
+    return renderer.readImage();
+  };
+  const auto count = [](const Image& image, bool white) {
+    int n = 0;
+    for (int y = 0; y < image.height_px; ++y) {
+      for (int x = 0; x < image.width_px; ++x) {
+        const std::uint8_t* p = image.pixel(x, y);
+        n += white ? (p[0] > 230 && p[1] > 230 && p[2] > 230)
+                   : (p[0] < 40 && p[1] < 40 && p[2] < 40);
+      }
+    }
+    return n;
+  };
+  // A 20 px ball: the circle (radius 10 px, about 300 px) minus the digit's ink is white.
+  const Image large = draw(0.1);
+  EXPECT_GT(count(large, true), 150);
+  EXPECT_LT(count(large, true), 330);
+  // The digit's dark ink sits inside the circle: the centre row crosses it.
+  int dark_in_centre = 0;
+  for (int x = 195; x <= 205; ++x) {
+    const std::uint8_t* p = large.pixel(x, 100);
+    dark_in_centre += p[0] < 100;
+  }
+  EXPECT_GT(dark_in_centre, 0);
+  // A 4 px ball is too small for a number.
+  EXPECT_EQ(count(draw(0.02), true), 0);
 }
 
 TEST(GlRenderer, SameInputGivesTheSameBytes) {
@@ -205,10 +241,12 @@ TEST(GlRenderer, NineBallBreakShowsOneBlobPerBallLeftAtItsFinalPosition) {
       ASSERT_GT((left[i].second - left[j].second).norm(), 2 * R + 4 * options.pixel_size_m);
     }
   }
-  // Each ball's centre pixel is nearer its own colour than any other ball's or the cloth's.
+  // Each ball's body is nearer its own colour than any other ball's or the cloth's.
   const Rgba cloth = tableColours(shot.table.kind).cloth;
   for (const auto& [id, p] : left) {
-    const std::uint8_t* centre = pixelAt(image, camera.pixelOf({p.x(), p.y(), 0}));
+    // Three quarters of a radius left of the centre: beside the number's white circle (half a
+    // radius), on a striped ball's band, well lit.
+    const std::uint8_t* centre = pixelAt(image, camera.pixelOf({p.x() - 0.75 * R, p.y(), 0}));
     const Rgba own = ballColour(shot.ball_set, id);
     const int own_distance = colourDistance(centre, own);
     EXPECT_LT(own_distance, colourDistance(centre, cloth)) << "ball " << id;

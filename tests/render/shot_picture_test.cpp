@@ -174,6 +174,13 @@ TEST(ShotPicture, NineBallBreakHasAMarkerPerEventAndABallPerBallLeft) {
   std::vector<const Disc*> balls = discsOf(picture, DiscStyle::Ball);
   for (const Disc* d : discsOf(picture, DiscStyle::StripedBall)) balls.push_back(d);
   ASSERT_EQ(balls.size(), left.size());
+  for (const Disc* d : balls) {  // pool balls carry their number; the cue ball none
+    const bool is_cue = d->colour == ballColour(shot.ball_set, "cue");
+    EXPECT_EQ(d->label.empty(), is_cue) << d->label;
+    if (!is_cue) {
+      EXPECT_EQ(d->colour, ballColour(shot.ball_set, d->label));
+    }
+  }
   for (const Eigen::Vector2d& p : left) {
     double nearest = 1e9;
     for (const Disc* d : balls) nearest = std::min(nearest, (d->centre_m.head<2>() - p).norm());

@@ -206,8 +206,11 @@ class Viewer {
       const double heading = session_->cue().heading_rad;
       const Eigen::Vector2d to = from + kAimLengthPerSpeed_m * session_->cue().speed_mps *
                                             Eigen::Vector2d(std::cos(heading), std::sin(heading));
-      picture.items.push_back(render::Stroke{
-          {from, to}, kAimWidth_px * options.pixel_size_m, 0, render::Rgba{0.95f, 0.95f, 0.9f, 1}});
+      render::Stroke aim;
+      aim.points_m = {from, to};
+      aim.width_m = kAimWidth_px * options.pixel_size_m;
+      aim.colour = render::Rgba{0.95f, 0.95f, 0.9f, 1};
+      picture.items.emplace_back(std::move(aim));
     }
     camera_ = render::cameraFor(picture, view_, w, h);
     renderer_.draw(picture, camera_);
