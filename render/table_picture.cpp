@@ -21,6 +21,23 @@ Mesh rectangle(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Rgba&
   return Mesh{{a, b, c, a, c, d}, 0.0, colour};
 }
 
+// The band between two centred rectangles, as four rectangles (drawing a band rather than a full
+// rectangle under the cloth saves filling most of the image twice).
+Mesh frame(const Eigen::Vector2d& inner_half, const Eigen::Vector2d& outer_half,
+           const Rgba& colour) {
+  Mesh band{{}, 0.0, colour};
+  const auto add = [&](const Mesh& piece) {
+    band.triangles_m.insert(band.triangles_m.end(), piece.triangles_m.begin(),
+                            piece.triangles_m.end());
+  };
+  const Eigen::Vector2d o = outer_half, i = inner_half;
+  add(rectangle({-o.x(), -o.y()}, {o.x(), -i.y()}, colour));  // bottom, full length
+  add(rectangle({-o.x(), i.y()}, {o.x(), o.y()}, colour));    // top, full length
+  add(rectangle({-o.x(), -i.y()}, {-i.x(), i.y()}, colour));  // left, between them
+  add(rectangle({i.x(), -i.y()}, {o.x(), i.y()}, colour));    // right
+  return band;
+}
+
 Disc flatDisc(const Eigen::Vector2d& centre, double radius, const Rgba& colour) {
   return Disc{Eigen::Vector3d(centre.x(), centre.y(), 0), radius, colour, DiscStyle::Flat, 0, {}};
 }
@@ -85,8 +102,10 @@ void addTable(const engine::Table& table, Picture& picture) {
   picture.min_corner_m = -rail_edge;
   picture.max_corner_m = rail_edge;
 
-  picture.items.push_back(rectangle(-rail_edge, rail_edge, colours.rail));
-  picture.items.push_back(rectangle(-cushion_edge, cushion_edge, colours.cushion));
+  // The cloth covers everything inside the cushion noses (its outline only reaches further out,
+  // into the pockets), so the rail and the cushion are bands around it.
+  picture.items.push_back(frame(cushion_edge, rail_edge, colours.rail));
+  picture.items.push_back(frame(half, cushion_edge, colours.cushion));
   for (const engine::Pocket& pocket : table.pockets) {
     const engine::PocketSpec& spec =
         pocket.kind == engine::PocketKind::Corner ? table.corner_pocket : table.side_pocket;
