@@ -14,6 +14,7 @@ packages=(
   libosmesa6-dev         # off-screen OpenGL (llvmpipe) for baize render
   libpng-dev             # PNG pictures
   libsdl2-dev            # the baize-view window
+  libgl1-mesa-dri        # Mesa's software rasteriser behind EGL: baize-view with no display (tests)
   libfreetype-dev fonts-dejavu-core  # legend text
 )
 
