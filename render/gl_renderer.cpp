@@ -41,8 +41,10 @@ constexpr float kDiscQuadExtent = 1.5f;
 struct Vertex {
   float position[3];  // the point, or a disc's centre, m
   float colour[4];
-  float local[2];  // a disc's corner in radii
-  float shape[3];  // kind, radius (m), inner fraction (rings)
+  float local[2];  // discs: the corner in radii; legend glyphs: atlas coordinates; ball
+                   // numbers: the glyph corner's offset from the ball's centre (m)
+  float shape[3];  // kind, then radius (m) and inner fraction (rings), or for ball numbers the
+                   // glyph corner's atlas coordinates
 };
 
 constexpr const char* kVertexShader = R"(#version 330 core
