@@ -118,8 +118,10 @@ Camera cameraFor(const Picture& picture, View view, int width_px, int height_px)
     camera.view = lookAt(target + distance_m * back, target, Eigen::Vector3d::UnitZ());
     for (double x : {picture.min_corner_m.x(), picture.max_corner_m.x()}) {
       for (double y : {picture.min_corner_m.y(), picture.max_corner_m.y()}) {
-        const Eigen::Vector3d ndc = ndcOf(camera, Eigen::Vector3d(x, y, 0));
-        if (std::abs(ndc.x()) > kAngledFill || std::abs(ndc.y()) > kAngledFill) return false;
+        for (double z : {0.0, picture.lowest_m}) {
+          const Eigen::Vector3d ndc = ndcOf(camera, Eigen::Vector3d(x, y, z));
+          if (std::abs(ndc.x()) > kAngledFill || std::abs(ndc.y()) > kAngledFill) return false;
+        }
       }
     }
     return true;

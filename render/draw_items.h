@@ -49,7 +49,17 @@ struct Disc {
   std::string label;          // Ball, StripedBall: the printed number (printable ASCII), or none
 };
 
-using DrawItem = std::variant<Mesh, Stroke, Disc>;
+// A vertical face standing on the segment from -> to, between two heights (a cushion's nose, the
+// table's side). Seen from straight above it has no area, so it shows only in the angled view.
+struct Wall {
+  Eigen::Vector2d from_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d to_m = Eigen::Vector2d::Zero();
+  double bottom_m = 0;
+  double top_m = 0;
+  Rgba colour;
+};
+
+using DrawItem = std::variant<Mesh, Stroke, Disc, Wall>;
 
 // One row of the legend the renderer lays out in an image corner: a ball swatch (when
 // `swatch`) and a line of text (printable ASCII).
@@ -67,6 +77,10 @@ struct Picture {
   Eigen::Vector2d max_corner_m = Eigen::Vector2d::Zero();
   Rgba background{0.12f, 0.12f, 0.13f, 1};
   std::vector<DrawItem> items;
+  // Drawn after the balls: what stands between the camera of the angled view and the cloth (the
+  // raised near cushion), laid where nothing else is drawn in the top view.
+  std::vector<DrawItem> foreground;
+  double lowest_m = 0;  // the lowest point drawn (the table's side), m: the angled view frames it
   std::vector<LegendRow> legend;  // empty: no legend
 };
 

@@ -132,6 +132,16 @@ void addFlatTriangle(std::vector<Vertex>& out, const Eigen::Vector2d& a, const E
   }
 }
 
+void addWall(std::vector<Vertex>& out, const Wall& wall) {
+  const Eigen::Vector3d a(wall.from_m.x(), wall.from_m.y(), wall.bottom_m);
+  const Eigen::Vector3d b(wall.to_m.x(), wall.to_m.y(), wall.bottom_m);
+  const Eigen::Vector3d c(wall.to_m.x(), wall.to_m.y(), wall.top_m);
+  const Eigen::Vector3d d(wall.from_m.x(), wall.from_m.y(), wall.top_m);
+  for (const Eigen::Vector3d* p : {&a, &b, &c, &a, &c, &d}) {
+    put(out, *p, wall.colour, 0, 0, kFlatGeometry, 0, 0);
+  }
+}
+
 void addStroke(std::vector<Vertex>& out, const Stroke& stroke) {
   const double half = stroke.width_m / 2;
   for (std::size_t i = 1; i < stroke.points_m.size(); ++i) {
@@ -309,18 +319,25 @@ void GlRenderer::draw(const Picture& picture, const Camera& camera) {
 
   std::vector<Vertex> vertices;
   std::vector<const Disc*> balls;
-  for (const DrawItem& item : picture.items) {
-    if (isBall(item)) {
-      balls.push_back(&std::get<Disc>(item));
-    } else if (const Mesh* mesh = std::get_if<Mesh>(&item)) {
+  const auto add = [&](const DrawItem& item) {
+    if (const Mesh* mesh = std::get_if<Mesh>(&item)) {
       for (std::size_t i = 0; i + 2 < mesh->triangles_m.size(); i += 3) {
         addFlatTriangle(vertices, mesh->triangles_m[i], mesh->triangles_m[i + 1],
                         mesh->triangles_m[i + 2], mesh->z_m, mesh->colour);
       }
     } else if (const Stroke* stroke = std::get_if<Stroke>(&item)) {
       addStroke(vertices, *stroke);
+    } else if (const Wall* wall = std::get_if<Wall>(&item)) {
+      addWall(vertices, *wall);
     } else {
       addDisc(vertices, std::get<Disc>(item));
+    }
+  };
+  for (const DrawItem& item : picture.items) {
+    if (isBall(item)) {
+      balls.push_back(&std::get<Disc>(item));
+    } else {
+      add(item);
     }
   }
   // Balls last, far to near (eye-space z grows towards the camera); ties keep picture order.
@@ -346,6 +363,7 @@ void GlRenderer::draw(const Picture& picture, const Camera& camera) {
     addDisc(vertices, *ball);
     if (labels && !ball->label.empty()) addBallLabel(vertices, *ball, *label_atlas_);
   }
+  for (const DrawItem& item : picture.foreground) add(item);
 
   gl_.BindFramebuffer(GL_FRAMEBUFFER, multisample_framebuffer_);
   gl_.Viewport(0, 0, camera.width_px, camera.height_px);

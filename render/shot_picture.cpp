@@ -200,10 +200,18 @@ Picture buildShotPicture(const ShotRecord& shot, const PictureOptions& options) 
           parts = {run.points};
         }
         for (const auto& part : parts) {
-          picture.items.push_back(Stroke{part, kTraceWidth_px * px, kTraceHeight_m, colour});
+          // Built in place: GCC 12 warns falsely about a moved-from temporary otherwise.
+          Stroke& trace = std::get<Stroke>(picture.items.emplace_back(Stroke{}));
+          trace.points_m = part;
+          trace.width_m = kTraceWidth_px * px;
+          trace.z_m = kTraceHeight_m;
+          trace.colour = colour;
           if (spec.stripe) {
-            picture.items.push_back(
-                Stroke{part, kStripeCoreWidth_px * px, kTraceHeight_m, colourFromHex("#ffffff")});
+            Stroke& core = std::get<Stroke>(picture.items.emplace_back(Stroke{}));
+            core.points_m = part;
+            core.width_m = kStripeCoreWidth_px * px;
+            core.z_m = kTraceHeight_m;
+            core.colour = colourFromHex("#ffffff");
           }
         }
       }

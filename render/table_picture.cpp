@@ -23,9 +23,9 @@ Mesh rectangle(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Rgba&
 
 // The band between two centred rectangles, as four rectangles (drawing a band rather than a full
 // rectangle under the cloth saves filling most of the image twice).
-Mesh frame(const Eigen::Vector2d& inner_half, const Eigen::Vector2d& outer_half,
+Mesh frame(const Eigen::Vector2d& inner_half, const Eigen::Vector2d& outer_half, double z_m,
            const Rgba& colour) {
-  Mesh band{{}, 0.0, colour};
+  Mesh band{{}, z_m, colour};
   const auto add = [&](const Mesh& piece) {
     band.triangles_m.insert(band.triangles_m.end(), piece.triangles_m.begin(),
                             piece.triangles_m.end());
@@ -68,10 +68,12 @@ std::vector<Eigen::Vector2d> arcPoints(const engine::JawArc& arc) {
 TableColours tableColours(engine::TableKind kind) {
   if (kind == engine::TableKind::Snooker) {
     return {colourFromHex("#1f6b35"), colourFromHex("#174f27"), colourFromHex("#4a2a14"),
-            colourFromHex("#0a0a0a"), colourFromHex("#e8e8e0")};
+            colourFromHex("#0a0a0a"), colourFromHex("#e8e8e0"), colourFromHex("#103a1c"),
+            colourFromHex("#2e1a0c")};
   }
   return {colourFromHex("#1c6fa8"), colourFromHex("#15557f"), colourFromHex("#4a2a14"),
-          colourFromHex("#0a0a0a"), colourFromHex("#e8e8e0")};
+          colourFromHex("#0a0a0a"), colourFromHex("#e8e8e0"), colourFromHex("#0f3d5c"),
+          colourFromHex("#2e1a0c")};
 }
 
 std::vector<Eigen::Vector2d> clothOutline(const engine::Table& table) {
@@ -101,24 +103,49 @@ void addTable(const engine::Table& table, Picture& picture) {
   const Eigen::Vector2d cushion_edge = half + Eigen::Vector2d::Constant(kCushionWidth_m);
   picture.min_corner_m = -rail_edge;
   picture.max_corner_m = rail_edge;
+  picture.lowest_m = -kTableSideDepth_m;
+  const double top_m = table.cushion_contact_height_m;  // of the rail and the cushions
 
   // The cloth covers everything inside the cushion noses (its outline only reaches further out,
   // into the pockets), so the rail and the cushion are bands around it.
-  picture.items.push_back(frame(cushion_edge, rail_edge, colours.rail));
-  picture.items.push_back(frame(half, cushion_edge, colours.cushion));
+  // The near side of the table (towards the angled view's camera).
+  picture.items.push_back(Wall{{-rail_edge.x(), -rail_edge.y()},
+                               {rail_edge.x(), -rail_edge.y()},
+                               -kTableSideDepth_m,
+                               top_m,
+                               colours.table_side});
+  picture.items.push_back(frame(cushion_edge, rail_edge, top_m, colours.rail));
+  picture.items.push_back(frame(half, cushion_edge, top_m, colours.cushion));
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    const engine::CushionSegment& rail = table.cushions.at(3 * k + 2);
+    if (rail.inward_normal.y() > 0.5) {
+      // A near rail cushion: its top again in front of everything; its nose faces away.
+      const Eigen::Vector2d back = -kCushionWidth_m * rail.inward_normal;
+      picture.foreground.push_back(Mesh{{rail.start_m, rail.end_m, rail.end_m + back, rail.start_m,
+                                         rail.end_m + back, rail.start_m + back},
+                                        top_m,
+                                        colours.cushion});
+    } else {
+      picture.items.push_back(Wall{rail.start_m, rail.end_m, 0.0, top_m, colours.cushion_face});
+    }
+  }
   for (const engine::Pocket& pocket : table.pockets) {
     const engine::PocketSpec& spec =
         pocket.kind == engine::PocketKind::Corner ? table.corner_pocket : table.side_pocket;
     // The hole: wide enough to reach the mouth, its back edge where the capture circle's is.
     const double hole_radius_m = std::max(pocket.capture.radius_m, 0.5 * spec.mouth_width_m);
-    picture.items.push_back(flatDisc(pocket.capture.centre_m, hole_radius_m, colours.pocket));
+    Disc hole = flatDisc(pocket.capture.centre_m, hole_radius_m, colours.pocket);
+    hole.centre_m.z() = top_m;  // a hole in the rail's top
+    picture.items.push_back(hole);
   }
   picture.items.push_back(Mesh{triangulate(clothOutline(table)), 0.0, colours.cloth});
 
   if (table.pool_markings) {
     const engine::PoolMarkings& m = *table.pool_markings;
     for (const Eigen::Vector2d& d : m.diamonds_m) {
-      picture.items.push_back(flatDisc(d, kDiamondRadius_m, colours.marking));
+      Disc diamond = flatDisc(d, kDiamondRadius_m, colours.marking);
+      diamond.centre_m.z() = top_m;  // on the rail's top
+      picture.items.push_back(diamond);
     }
     picture.items.push_back(flatDisc(m.foot_spot_m, kSpotRadius_m, colours.marking));
     picture.items.push_back(flatDisc(m.head_spot_m, kSpotRadius_m, colours.marking));

@@ -15,10 +15,13 @@ namespace baize::render {
 // (wide enough to hold the diamonds, which sit about 0.09 m behind the nose).
 constexpr double kCushionWidth_m = 0.05;
 constexpr double kRailOuterEdge_m = 0.15;
+// How far the table's side shows below the cloth in the angled view, m.
+constexpr double kTableSideDepth_m = 0.12;
 
 // Colours of the table (not of the balls, which the ball set gives).
 struct TableColours {
   Rgba cloth, cushion, rail, pocket, marking;
+  Rgba cushion_face, table_side;  // the vertical faces, darker: lit from above
 };
 TableColours tableColours(engine::TableKind kind);
 
@@ -27,7 +30,10 @@ TableColours tableColours(engine::TableKind kind);
 std::vector<Eigen::Vector2d> clothOutline(const engine::Table& table);
 
 // Appends the table's items to `picture` (bottom layers first) and sets its frame to the rail's
-// outer edge.
+// outer edge. The rail and the cushions stand at the cushion contact height, the cloth at 0: in the
+// angled view (from the -y side) the near side of the table, the far and end cushions' noses show,
+// and the near cushions go to the picture's foreground (they hide the cloth behind them). Seen from
+// straight above all of this draws as a flat table.
 void addTable(const engine::Table& table, Picture& picture);
 
 }  // namespace baize::render

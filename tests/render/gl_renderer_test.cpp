@@ -195,6 +195,28 @@ TEST(GlRenderer, NumberedBallShowsAWhiteCircleWithDarkDigitsWhenLargeEnough) {
   EXPECT_EQ(count(draw(0.02), true), 0);
 }
 
+TEST(GlRenderer, WallShowsInTheAngledViewOnlyBelowItsTopEdge) {
+  Picture picture = emptyFrame();
+  picture.lowest_m = -0.2;
+  // The frame's near side, standing from 0.2 m below the cloth to the cloth.
+  picture.items.push_back(Wall{{-1, -0.5}, {1, -0.5}, -0.2, 0.0, kYellow});
+  GlRenderer& renderer = testRenderer();
+  renderer.draw(picture, cameraFor(picture, View::Top, 400, 200));
+  const Image top = renderer.readImage();
+  for (int y = 0; y < top.height_px; y += 7) {  // seen from straight above it has no area
+    for (int x = 0; x < top.width_px; x += 7) {
+      ASSERT_LE(colourDistance(top.pixel(x, y), kDark), kChannelTolerance) << x << ", " << y;
+    }
+  }
+  const Camera angled = cameraFor(picture, View::Angled, 400, 200);
+  renderer.draw(picture, angled);
+  const Image image = renderer.readImage();
+  EXPECT_LE(colourDistance(pixelAt(image, angled.pixelOf({0, -0.5, -0.1})), kYellow),
+            kChannelTolerance);
+  EXPECT_LE(colourDistance(pixelAt(image, angled.pixelOf({0, -0.5, 0.1})), kDark),
+            kChannelTolerance);
+}
+
 TEST(GlRenderer, SameInputGivesTheSameBytes) {
   const engine::Scene scene =
       engine::loadScene(engine::assetsDirectory() + "/scenes/draw-shot.json");

@@ -93,6 +93,31 @@ TEST_P(EveryTable, PictureIsFramedByTheRailAndHoldsTheMarkings) {
   }
 }
 
+TEST_P(EveryTable, NearCushionsStandInTheForegroundAndTheOthersShowTheirNoses) {
+  const engine::Table table = engine::builtinTable(GetParam());
+  Picture picture;
+  addTable(table, picture);
+  std::size_t near_rails = 0;
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    near_rails += table.cushions[3 * k + 2].inward_normal.y() > 0.5;
+  }
+  EXPECT_EQ(near_rails, 2u);  // the -y side, split by its middle pocket
+  ASSERT_EQ(picture.foreground.size(), near_rails);
+  for (const DrawItem& item : picture.foreground) {
+    const Mesh& top = std::get<Mesh>(item);
+    EXPECT_DOUBLE_EQ(top.z_m, table.cushion_contact_height_m);
+    for (const Eigen::Vector2d& p : top.triangles_m) {  // between the nose and the cushion's back
+      EXPECT_LE(p.y(), -table.width_m / 2 + kGeometryTolerance_m);
+      EXPECT_GE(p.y(), -table.width_m / 2 - kCushionWidth_m - kGeometryTolerance_m);
+    }
+  }
+  std::size_t walls = 0;
+  for (const DrawItem& item : picture.items) walls += std::holds_alternative<Wall>(item);
+  // The table's near side and the noses of the other rail cushions.
+  EXPECT_EQ(walls, 1 + table.pockets.size() - near_rails);
+  EXPECT_DOUBLE_EQ(picture.lowest_m, -kTableSideDepth_m);
+}
+
 INSTANTIATE_TEST_SUITE_P(Shipped, EveryTable, ::testing::ValuesIn(engine::builtinTableNames()),
                          [](const auto& info) {
                            std::string name = info.param;
