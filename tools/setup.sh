@@ -12,8 +12,12 @@ packages=(
   libgtest-dev libgmock-dev  # unit tests
   libbenchmark-dev       # micro benchmarks
   libcairo2-dev          # charts (render/line_chart): drawing and PNG output
-  fonts-dejavu-core      # the charts' text font, DejaVu Sans
   libbox2d-dev           # the Box2D 2.4.1 baseline of baize bench accuracy
+  libosmesa6-dev         # off-screen OpenGL (llvmpipe) for baize render
+  libpng-dev             # PNG pictures
+  libsdl2-dev            # the baize-view window
+  libgl1-mesa-dri        # Mesa's software rasteriser behind EGL: baize-view with no display (tests)
+  libfreetype-dev fonts-dejavu-core  # legend text and the charts' font (DejaVu Sans)
 )
 
 missing=()

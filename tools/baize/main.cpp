@@ -5,10 +5,12 @@
 
 #include "tools/baize/bench_accuracy_command.h"
 #include "tools/baize/bench_cushion_command.h"
+#include "tools/baize/bench_render_command.h"
 #include "tools/baize/bench_shots_command.h"
 #include "tools/baize/chart_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_command.h"
+#include "tools/baize/render_command.h"
 #include "tools/baize/simulate_command.h"
 #include "tools/baize/stress_command.h"
 
@@ -20,6 +22,7 @@ int main(int argc, char** argv) {
   addChartCommand(app);
   addCushionCommand(app);
   addSimulateCommand(app);
+  addRenderCommand(app);
   addStressCommand(app);
 
   CLI::App* bench = app.add_subcommand("bench", "Measure the speed and accuracy of the models");
@@ -27,6 +30,7 @@ int main(int argc, char** argv) {
   addBenchCushionCommand(*bench);
   addBenchShotsCommand(*bench);
   addBenchAccuracyCommand(*bench);
+  addBenchRenderCommand(*bench);
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -9,8 +10,10 @@
 #include <set>
 
 #include "engine/scene.h"
+#include "render/shot_record.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/shot_pictures.h"
 
 namespace baize::tools {
 namespace {
@@ -18,6 +21,7 @@ namespace {
 struct SimulateFlags {
   std::string scene;
   std::string json_path;
+  PictureFlags pictures;
 };
 
 nlohmann::json stateJson(const physics::BallState& s) {
@@ -30,10 +34,11 @@ nlohmann::json stateJson(const physics::BallState& s) {
 void runSimulate(const SimulateFlags& flags) {
   std::unique_ptr<AtomicFile> json_file;
   if (!flags.json_path.empty()) json_file = std::make_unique<AtomicFile>(flags.json_path, "--json");
+  if (flags.pictures.wanted()) checkPictureFlags(flags.pictures);
   const engine::Scene scene = engine::loadScene(flags.scene);
   const auto start = std::chrono::steady_clock::now();
-  const engine::SceneRun run =
-      engine::runScene(scene, /*record_trajectories=*/json_file != nullptr);
+  const engine::SceneRun run = engine::runScene(
+      scene, /*record_trajectories=*/json_file != nullptr || flags.pictures.wanted());
   const double wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const engine::SimulationResult& r = run.result;
@@ -86,6 +91,8 @@ void runSimulate(const SimulateFlags& flags) {
   if (json_file) {
     nlohmann::json out;
     out["scene"] = flags.scene;
+    // Where `baize render` finds the table, balls and cloth again, whatever its working directory.
+    out["scene_path"] = std::filesystem::absolute(flags.scene).lexically_normal().string();
     out["table"] = scene.table.name;
     out["end_time_s"] = r.end_time_s;
     out["first_ball_hit"] = first_hit;
@@ -120,6 +127,7 @@ void runSimulate(const SimulateFlags& flags) {
     json_file->stream() << std::setprecision(17) << out.dump(2) << '\n';
     json_file->commit();
   }
+  if (flags.pictures.wanted()) writePictures(render::shotRecordOf(scene, run), flags.pictures);
 }
 
 }  // namespace
@@ -131,6 +139,7 @@ void addSimulateCommand(CLI::App& parent) {
   command->add_option("scene", flags->scene, "the scene file (JSON, see docs/scenes.md)")
       ->required();
   command->add_option("--json", flags->json_path, "also write the events and final states here");
+  addPictureFlags(*command, flags->pictures);
   command->callback([flags] {
     if (const int status = runReportingErrors("simulate", [&] { runSimulate(*flags); })) {
       throw CLI::RuntimeError(status);

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# baize render and baize simulate --png, run the way a user runs them: pictures of the shipped
+# scenes and of a saved result, frames, the bench in smoke size, and bad input.
+# Usage: render_cli_test.sh path/to/baize
+set -euo pipefail
+baize=$1
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+export GALLIUM_DRIVER=llvmpipe  # one rasteriser: the same input gives the same bytes
+
+# PNG width and height from the IHDR chunk.
+png_size() {
+  python3 - "$1" <<'PY'
+import struct, sys
+data = open(sys.argv[1], "rb").read(24)
+assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+print(*struct.unpack(">II", data[16:24]))
+PY
+}
+
+# simulate --png: the picture is written (parent folders made), named in the output, of the size asked.
+scene="$root/assets/scenes/9-ball-break.json"
+out=$("$baize" simulate "$scene" --png "$work/out/deeper/break.png" --width 640 --height 320) ||
+  fail "simulate --png exited $?"
+grep -q "^picture: $work/out/deeper/break.png (640 x 320 px, top view)$" <<<"$out" || fail "no picture line: $out"
+[[ $(png_size "$work/out/deeper/break.png") == "640 320" ]] || fail "size $(png_size "$work/out/deeper/break.png")"
+
+# render of the scene gives the same bytes as simulate --png, twice over (determinism).
+"$baize" render "$scene" --png "$work/a.png" --width 640 --height 320 >/dev/null || fail "render exited $?"
+"$baize" render "$scene" --png "$work/b.png" --width 640 --height 320 >/dev/null || fail "render exited $?"
+cmp -s "$work/a.png" "$work/b.png" || fail "two renders of the same scene differ"
+cmp -s "$work/a.png" "$work/out/deeper/break.png" || fail "render and simulate --png differ"
+
+# A saved result renders to the same picture as its scene, from another working directory.
+"$baize" simulate "$scene" --json "$work/result.json" >/dev/null || fail "simulate --json exited $?"
+(cd / && "$baize" render "$work/result.json" --png "$work/from-result.png" --width 640 --height 320 >/dev/null) ||
+  fail "render of a result exited $?"
+cmp -s "$work/a.png" "$work/from-result.png" || fail "result and scene pictures differ"
+
+# --at: a picture of the shot under way differs from the end; the angled view differs from the top.
+"$baize" render "$scene" --png "$work/at.png" --width 640 --height 320 --at 0.05 >/dev/null || fail "--at exited $?"
+cmp -s "$work/a.png" "$work/at.png" && fail "--at 0.05 drew the end of the shot"
+"$baize" render "$scene" --png "$work/angled.png" --width 640 --height 320 --view angled >/dev/null ||
+  fail "--view angled exited $?"
+cmp -s "$work/a.png" "$work/angled.png" && fail "the angled view drew the top view"
+
+# --legend adds a legend (a different picture), the same bytes each time.
+"$baize" render "$scene" --png "$work/legend.png" --width 640 --height 320 --legend >/dev/null ||
+  fail "--legend exited $?"
+"$baize" render "$scene" --png "$work/legend2.png" --width 640 --height 320 --legend >/dev/null
+cmp -s "$work/a.png" "$work/legend.png" && fail "--legend drew no legend"
+cmp -s "$work/legend.png" "$work/legend2.png" || fail "two legend pictures differ"
+
+# --frames: one frame per 1/fps s of the shot and one at rest, numbered from 0, each of the size asked.
+end=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["end_time_s"])' "$work/result.json")
+out=$("$baize" render "$work/result.json" --frames "$work/frames" --fps 2 --width 64 --height 32) ||
+  fail "--frames exited $?"
+expected=$(python3 -c 'import math,sys; print(math.ceil(float(sys.argv[1]) * 2) + 1)' "$end")
+count=$(ls "$work/frames" | grep -c '^frame_[0-9]\{5\}\.png$')
+[[ $count -eq $expected ]] || fail "$count frames for a shot of $end s at 2 fps, expected $expected"
+[[ -f "$work/frames/frame_00000.png" ]] || fail "frames do not start at frame_00000.png"
+[[ $(png_size "$work/frames/frame_00000.png") == "64 32" ]] || fail "frame size"
+grep -q "^frames: $expected in $work/frames" <<<"$out" || fail "no frames line: $out"
+
+# Bad input: exit 2, a message naming what is wrong, no file (and no temporary) left behind.
+expect_refused() {  # expect_refused WHAT-TO-FIND OUTPUT-THAT-MUST-NOT-EXIST ARGS...
+  local needle=$1 output=$2 msg status
+  shift 2
+  set +e
+  msg=$("$baize" "$@" 2>&1 >/dev/null); status=$?
+  set -e
+  [[ $status -eq 2 ]] || fail "'$*' exited $status, expected 2 ($msg)"
+  grep -q -- "$needle" <<<"$msg" || fail "'$*': message does not name '$needle': $msg"
+  [[ -e "$output" || -e "$output.tmp" ]] && fail "'$*' left $output behind"
+  return 0
+}
+expect_refused "missing.json" "$work/x.png" render "$work/missing.json" --png "$work/x.png"
+expect_refused "--width" "$work/x.png" render "$scene" --png "$work/x.png" --width 0
+expect_refused "--height" "$work/x.png" render "$scene" --png "$work/x.png" --height 100000
+expect_refused "--view" "$work/x.png" render "$scene" --png "$work/x.png" --view side
+expect_refused "--at" "$work/x.png" render "$scene" --png "$work/x.png" --at -1
+expect_refused "--fps" "$work/f/frame_00000.png" render "$scene" --frames "$work/f" --fps 0
+touch "$work/a-file"
+expect_refused "--png" "$work/a-file/x.png" render "$scene" --png "$work/a-file/x.png"
+expect_refused "--png" "$work/x.png" render "$scene"
+expect_refused "--width" "$work/y.png" simulate "$scene" --png "$work/y.png" --width 0
+echo '{"scene": "nowhere.json", "trajectories": {}}' >"$work/bad-result.json"
+expect_refused "nowhere.json" "$work/x.png" render "$work/bad-result.json" --png "$work/x.png"
+
+# bench render, smoke size: one line with the median.
+out=$("$baize" bench render --width 64 --height 32 --repeat 2) || fail "bench render exited $?"
+grep -q "^median of 2 renders: [0-9.]* ms" <<<"$out" || fail "bench render output: $out"
+echo "render CLI: all checks passed"

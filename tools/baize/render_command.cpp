@@ -1,0 +1,44 @@
+#include "tools/baize/render_command.h"
+
+#include <CLI/CLI.hpp>
+#include <memory>
+
+#include "render/shot_record.h"
+#include "tools/baize/cli_errors.h"
+#include "tools/baize/shot_pictures.h"
+
+namespace baize::tools {
+namespace {
+
+struct RenderFlags {
+  std::string input;
+  PictureFlags pictures;
+};
+
+void runRender(const RenderFlags& flags) {
+  if (!flags.pictures.wanted()) {
+    throw UsageError("nothing to write: give --png OUT.png or --frames DIR");
+  }
+  checkPictureFlags(flags.pictures);
+  writePictures(render::loadShotRecord(flags.input), flags.pictures);
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& parent) {
+  auto flags = std::make_shared<RenderFlags>();
+  CLI::App* command = parent.add_subcommand(
+      "render", "Draw a shot (a scene or a result of 'baize simulate --json') as PNG pictures");
+  command
+      ->add_option("input", flags->input,
+                   "a scene file (docs/scenes.md) or a result of 'baize simulate --json'")
+      ->required();
+  addPictureFlags(*command, flags->pictures);
+  command->callback([flags] {
+    if (const int status = runReportingErrors("render", [&] { runRender(*flags); })) {
+      throw CLI::RuntimeError(status);
+    }
+  });
+}
+
+}  // namespace baize::tools
