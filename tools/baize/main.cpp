@@ -3,10 +3,12 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "tools/baize/batch_command.h"
 #include "tools/baize/bench_accuracy_command.h"
 #include "tools/baize/bench_cushion_command.h"
 #include "tools/baize/bench_shots_command.h"
 #include "tools/baize/chart_command.h"
+#include "tools/baize/check_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_command.h"
 #include "tools/baize/simulate_command.h"
@@ -17,7 +19,9 @@ int main(int argc, char** argv) {
   CLI::App app{"Baize: an event-based pool and snooker table simulator", "baize"};
   app.require_subcommand(1, 1);
 
+  addBatchCommand(app);
   addChartCommand(app);
+  addCheckCommand(app);
   addCushionCommand(app);
   addSimulateCommand(app);
   addStressCommand(app);
