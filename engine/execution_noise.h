@@ -15,7 +15,8 @@ namespace baize::engine {
 
 // Standard deviations of the errors. Defaults: physics-notes section 4.
 struct ExecutionNoise {
-  double tip_offset_sigma_m = 0.0005;  // on each of the side and height offsets, on the ball's surface
+  double tip_offset_sigma_m =
+      0.0005;  // on each of the side and height offsets, on the ball's surface
   double elevation_sigma_deg = 0.1;
   double aim_sigma_deg = 0.125;  // heading
   double speed_sigma_mps = 0.075;

@@ -1,6 +1,6 @@
 // What a shot did, in the terms players and referees use: the balls pocketed (and where), the first
-// ball the cue ball hit, the cushions it touched before that, where it stopped, and whether the shot
-// was a foul. Read from a SceneRun's events; no physics of its own.
+// ball the cue ball hit, the cushions it touched before that, where it stopped, and whether the
+// shot was a foul. Read from a SceneRun's events; no physics of its own.
 #pragma once
 
 #include <Eigen/Core>
@@ -33,7 +33,7 @@ const char* foulName(Foul foul);
 
 struct ShotOutcome {
   std::string cue_ball;
-  std::vector<PocketedBall> pocketed;  // in the order they fell, the cue ball included
+  std::vector<PocketedBall> pocketed;    // in the order they fell, the cue ball included
   std::optional<std::string> first_hit;  // the first ball the cue ball touched
   // Cushion and jaw contacts of the cue ball before it first touched another ball (all of its
   // cushion contacts when it touched none).
@@ -41,7 +41,7 @@ struct ShotOutcome {
   bool cue_ball_pocketed = false;
   Eigen::Vector2d cue_ball_final_m = Eigen::Vector2d::Zero();
   std::vector<FinalBall> final_balls;  // in the scene's order
-  Foul foul = Foul::None;  // a pocketed cue ball counts before a miss when both happen
+  Foul foul = Foul::None;              // a pocketed cue ball counts before a miss when both happen
   long events = 0;
 
   const FinalBall* ball(const std::string& id) const;  // nullptr for a ball not in the scene

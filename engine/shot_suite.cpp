@@ -29,8 +29,9 @@ std::string pointText(const Eigen::Vector2d& p) {
 
 std::string pocketText(int pocket) {
   const auto& names = pocketNames();
-  return pocket >= 0 && pocket < static_cast<int>(names.size()) ? names[pocket]
-                                                                 : "pocket " + std::to_string(pocket);
+  return pocket >= 0 && pocket < static_cast<int>(names.size())
+             ? names[pocket]
+             : "pocket " + std::to_string(pocket);
 }
 
 std::string listText(const std::vector<std::string>& ids) {
@@ -109,9 +110,9 @@ CueBallRegion readRegion(const JsonReader& reader, const nlohmann::json& raw, co
                     static_cast<int>(reader.has("rectangle")) +
                     static_cast<int>(reader.has("straight_shot_at") || reader.has("into_pocket"));
   if (forms != 1) {
-    throw std::invalid_argument(
-        where + " is not allowed: give exactly one region: circle [x, y, r], "
-                           "rectangle [x0, y0, x1, y1], or straight_shot_at with into_pocket");
+    throw std::invalid_argument(where +
+                                " is not allowed: give exactly one region: circle [x, y, r], "
+                                "rectangle [x0, y0, x1, y1], or straight_shot_at with into_pocket");
   }
   CueBallRegion region;
   if (reader.has("circle")) {
@@ -131,7 +132,8 @@ CueBallRegion readRegion(const JsonReader& reader, const nlohmann::json& raw, co
     region.max_m = {r[2], r[3]};
   } else {
     if (!reader.has("straight_shot_at") || !reader.has("into_pocket")) {
-      throw std::invalid_argument(where + " is not allowed: straight_shot_at and into_pocket go together");
+      throw std::invalid_argument(where +
+                                  " is not allowed: straight_shot_at and into_pocket go together");
     }
     region.kind = CueBallRegion::Kind::StraightShot;
     region.ball = objectBall(reader, "straight_shot_at", scene);
@@ -229,7 +231,8 @@ SuiteCase readCase(const nlohmann::json& raw, const std::string& source, int ind
 void setSampleShot(const SuiteCase& suite_case, const ExecutionNoise& noise, std::uint64_t seed,
                    Scene* scene) {
   NormalGenerator normal(seed);
-  const ExecutionError error = drawExecutionError(noise, suite_case.scene.ball_set.radius_m, &normal);
+  const ExecutionError error =
+      drawExecutionError(noise, suite_case.scene.ball_set.radius_m, &normal);
   scene->shot = perturbedShot(suite_case.scene.shot, error);
 }
 
@@ -261,8 +264,8 @@ const char* expectationKey(Expectation::Kind kind) {
   return "?";
 }
 
-StraightShotCheck straightShot(const Table& table, double ball_radius_m,
-                               const ShotOutcome& outcome, const std::string& ball, int pocket) {
+StraightShotCheck straightShot(const Table& table, double ball_radius_m, const ShotOutcome& outcome,
+                               const std::string& ball, int pocket) {
   StraightShotCheck check;
   const FinalBall* object = outcome.ball(ball);
   if (outcome.cue_ball_pocketed) {
@@ -280,13 +283,13 @@ StraightShotCheck straightShot(const Table& table, double ball_radius_m,
   const Eigen::Vector2d ghost = object->position_m - 2 * R * to_pocket;
   const Eigen::Vector2d to_ghost = ghost - cue;
   // A cue ball already at the ghost position (frozen to the ball on the line) is a straight hit.
-  check.cut_deg = to_ghost.norm() > 0
-                      ? std::acos(std::clamp(to_ghost.normalized().dot(to_pocket), -1.0, 1.0)) *
-                            kRadToDeg
-                      : 0;
+  check.cut_deg =
+      to_ghost.norm() > 0
+          ? std::acos(std::clamp(to_ghost.normalized().dot(to_pocket), -1.0, 1.0)) * kRadToDeg
+          : 0;
   if (check.cut_deg > kMaxStraightShotCut_deg) {
-    check.reason = "cut " + fixed(check.cut_deg, 1) + " deg > " +
-                   fixed(kMaxStraightShotCut_deg, 0) + " deg";
+    check.reason =
+        "cut " + fixed(check.cut_deg, 1) + " deg > " + fixed(kMaxStraightShotCut_deg, 0) + " deg";
     return check;
   }
   const double clearance = 2 * R + kStraightShotClearance_m;
@@ -325,7 +328,9 @@ Suite suiteFromJson(const nlohmann::json& document, const std::string& source) {
   return suite;
 }
 
-Suite loadSuite(const std::string& path) { return suiteFromJson(JsonReader::parseFile(path), path); }
+Suite loadSuite(const std::string& path) {
+  return suiteFromJson(JsonReader::parseFile(path), path);
+}
 
 ExpectationResult evaluateExpectation(const Expectation& e, const ShotOutcome& outcome,
                                       const Scene& scene) {
@@ -429,8 +434,7 @@ ProbabilityEstimate wilsonEstimate(int successes, int samples, double z) {
   const double z2 = z * z;
   const double centre = (p.probability + z2 / (2 * n)) / (1 + z2 / n);
   const double half =
-      z / (1 + z2 / n) *
-      std::sqrt(p.probability * (1 - p.probability) / n + z2 / (4 * n * n));
+      z / (1 + z2 / n) * std::sqrt(p.probability * (1 - p.probability) / n + z2 / (4 * n * n));
   p.low = std::max(0.0, centre - half);
   p.high = std::min(1.0, centre + half);
   return p;

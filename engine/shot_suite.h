@@ -49,18 +49,18 @@ struct StraightShotCheck {
   std::string reason;  // when not clear: what is in the way, or the cut
 };
 
-StraightShotCheck straightShot(const Table& table, double ball_radius_m,
-                               const ShotOutcome& outcome, const std::string& ball, int pocket);
+StraightShotCheck straightShot(const Table& table, double ball_radius_m, const ShotOutcome& outcome,
+                               const std::string& ball, int pocket);
 
 struct Expectation {
   enum class Kind {
-    Pocketed,                   // every ball of `balls` pocketed
-    NotPocketed,                // no ball of `balls` pocketed
-    FirstHit,                   // the cue ball first touches `ball`
-    CueBallNotPocketed,         //
-    CueBallStopsIn,             // the cue ball stops (on the table) in `region`
+    Pocketed,                     // every ball of `balls` pocketed
+    NotPocketed,                  // no ball of `balls` pocketed
+    FirstHit,                     // the cue ball first touches `ball`
+    CueBallNotPocketed,           //
+    CueBallStopsIn,               // the cue ball stops (on the table) in `region`
     MinCushionsBeforeObjectBall,  // at least `count` cushion or jaw contacts before the first hit
-    NoFoul,                     // engine::Foul::None
+    NoFoul,                       // engine::Foul::None
   };
   Kind kind = Kind::NoFoul;
   std::vector<std::string> balls;
@@ -122,7 +122,7 @@ ProbabilityEstimate wilsonEstimate(int successes, int samples, double z = kWilso
 
 struct NoisyCaseResult {
   int samples = 0;
-  int miscues = 0;  // samples whose tip offset passed the miscue limit: every expectation unmet
+  int miscues = 0;      // samples whose tip offset passed the miscue limit: every expectation unmet
   int failed_runs = 0;  // samples whose simulation failed (event budget): every expectation unmet
   std::vector<ProbabilityEstimate> expectations;  // in the case's order
   ProbabilityEstimate whole_case;                 // every expectation met in the same sample

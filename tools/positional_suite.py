@@ -94,6 +94,73 @@ def r4(x):
     return round(x, 4)
 
 
+
+# --- A ball's path on the cloth with rails, for the two-rail case -------------------------------
+# Closed forms of physics-notes section 2 (sliding: constant deceleration mu_s g along the fixed slip
+# direction, the spin turning at 5 mu_s g / 2R; rolling: mu_r g along the velocity) between rails;
+# at a rail the simple rule of docs/scenes.md (the normal velocity reverses times 0.91, the measured
+# head-on slope; the velocity along the rail and the spin are kept). This is the naive player's
+# model of a rail; the simulator uses the seed's cushion model, which also turns the ball by the
+# friction at the nose (docs/positional.md compares the two).
+RAIL_RESTITUTION = 0.91
+
+
+def first_root(a, b, c):
+    """Smallest t > 1e-12 with a t^2 + b t + c = 0, or None."""
+    roots = []
+    if abs(a) < 1e-15:
+        if abs(b) > 1e-15:
+            roots = [-c / b]
+    else:
+        disc = b * b - 4 * a * c
+        if disc >= 0:
+            q = math.sqrt(disc)
+            roots = [(-b - q) / (2 * a), (-b + q) / (2 * a)]
+    roots = [t for t in roots if t > 1e-12]
+    return min(roots) if roots else None
+
+
+def trace(pos, vel, spin, p, rails_wanted=None):
+    """pos, vel: [x, y]; spin: [w_x, w_y] (rad/s). Returns the stop point and the rails touched."""
+    R, a_s, a_r = p["R"], p["mu_s"] * G, p["mu_r"] * G
+    lim = (p["L"] / 2 - R, p["W"] / 2 - R)
+    rails = []
+    pos, vel, spin = list(pos), list(vel), list(spin)
+    for _ in range(100):
+        slip = (vel[0] - R * spin[1], vel[1] + R * spin[0])
+        slip_n = math.hypot(*slip)
+        speed = math.hypot(*vel)
+        if speed < 1e-9 and slip_n < 1e-9:
+            return pos, rails
+        if slip_n > 1e-9:
+            acc = (-a_s * slip[0] / slip_n, -a_s * slip[1] / slip_n)
+            t_end = 2 * slip_n / (7 * a_s)
+        else:
+            acc = (-a_r * vel[0] / speed, -a_r * vel[1] / speed)
+            t_end = speed / a_r
+        hit, axis = t_end, None
+        for k in range(2):
+            for wall in (lim[k], -lim[k]):
+                t = first_root(0.5 * acc[k], vel[k], pos[k] - wall)
+                if t is not None and t < hit and (vel[k] + acc[k] * t) * wall > 0:
+                    hit, axis = t, k
+        t = hit
+        pos = [pos[k] + vel[k] * t + 0.5 * acc[k] * t * t for k in range(2)]
+        if slip_n > 1e-9:
+            spin = [spin[0] - 2.5 * a_s / R * t * acc[1] / a_s,
+                    spin[1] + 2.5 * a_s / R * t * acc[0] / a_s]
+        vel = [vel[k] + acc[k] * t for k in range(2)]
+        if axis is None:
+            if slip_n > 1e-9:  # now rolling
+                spin = [-vel[1] / R, vel[0] / R]
+            else:
+                return pos, rails
+        else:
+            vel[axis] = -RAIL_RESTITUTION * vel[axis]
+            rails.append(("x" if axis == 0 else "y") + ("+" if pos[axis] > 0 else "-"))
+    raise RuntimeError("no rest after 100 phases")
+
+
 cases = []
 notes = {}
 
@@ -210,6 +277,68 @@ cases.append({
     "scene": scene,
     "expect": {"pocketed": ["black"],
                "cue_ball_stops_in": {"straight_shot_at": "red1", "into_pocket": "bottom-middle"}},
+})
+
+# 5. Two-rail position: a stun cut of 35 deg into the top-right corner; the cue ball leaves along
+#    the tangent line (90 deg rule: no spin at contact; the normal part keeps (1-e)/2 of the
+#    approach, and the throw friction mu(u) J takes from the tangential part), goes off the right
+#    and bottom rails and must stop where it has a straight shot at the 2 into the bottom-left
+#    corner. The stop point comes from trace() above; ball 2 is placed 0.6 m further along the
+#    line from the bottom-left pocket's mouth through that point, so the region is a fan of cut
+#    angles around it rather than a fitted circle.
+p = POOL
+cut, D, b, v_arrive = math.radians(35), 0.9, -0.25, 0
+u = (1 / math.sqrt(2), 1 / math.sqrt(2))
+perp = (u[1], -u[0])  # the tangent line's direction, towards the bottom-right
+corner = (p["L"] / 2, p["W"] / 2)
+obj = (corner[0] - 0.6 * u[0], corner[1] - 0.6 * u[1])
+ghost = (obj[0] - 2 * p["R"] * u[0], obj[1] - 2 * p["R"] * u[1])
+# The cue ball comes from the upper-left side of the line, so it departs along +perp.
+d = (math.cos(cut) * u[0] + math.sin(cut) * perp[0], math.cos(cut) * u[1] + math.sin(cut) * perp[1])
+cue = (ghost[0] - D * d[0], ghost[1] - D * d[1])
+# Stun at contact: D = (v0^2 / mu_s g)(-b - b^2/2) fixes v0 for this b.
+v0 = math.sqrt(D * p["mu_s"] * G / (-b - b * b / 2))
+V = cue_speed_for(v0, b, p)
+v, rw = travel(v0, 2.5 * b * v0, D, p)
+normal_speed, tangent_speed = v * math.cos(cut), v * math.sin(cut)
+J_per_m = (1 + p["e"]) / 2 * normal_speed
+mu = FIT_A + FIT_B * math.exp(-FIT_C * tangent_speed)
+# Friction stops at the value that ends the sliding of the contact (both balls turn: 2 (1 + 5/2)).
+throw = min(mu * J_per_m, tangent_speed / 7)
+after = [(1 - p["e"]) / 2 * normal_speed * u[k] + (tangent_speed - throw) * perp[k]
+         for k in range(2)]
+stop, rails = trace(ghost, after, [0.0, 0.0], p)
+notes["two-rail"] = dict(cue_speed=V, arrival_speed=v, rails=rails, stop=stop)
+mouth0 = (-p["L"] / 2 + p["corner_mouth"] / math.sqrt(2) / 2,
+          -p["W"] / 2 + p["corner_mouth"] / math.sqrt(2) / 2)
+to_mouth = (mouth0[0] - stop[0], mouth0[1] - stop[1])
+n = math.hypot(*to_mouth)
+two = [r4(stop[0] + 0.5 * to_mouth[0] / n), r4(stop[1] + 0.5 * to_mouth[1] / n)]
+scene = {"table": p["table"], "ball_set": p["ball_set"],
+         "balls": {"cue": at(cue, u, 0), "1": at(obj, u, 0), "2": two},
+         "shot": {"heading_deg": round(math.degrees(math.atan2(d[1], d[0])), 6),
+                  "speed_mps": r4(V), "height": b}}
+cases.append({
+    "name": "two-rail-position",
+    "description": f"Stun cut of 35 deg into the top-right corner at {v:.3f} m/s; the cue ball goes "
+                   f"off the right and bottom rails to about [{stop[0]:.3f}, {stop[1]:.3f}] (closed "
+                   f"forms with the simple rail rule) and must have a straight shot at the 2, "
+                   f"placed 0.5 m from there towards the bottom-left pocket",
+    "scene": scene,
+    "expect": {"pocketed": ["1"], "first_hit": "1", "no_foul": True,
+               "cue_ball_stops_in": {"straight_shot_at": "2", "into_pocket": "bottom-left"}},
+})
+simple_rails = dict(scene)
+simple_rails["physics"] = {"cushion": {"model": "simple",
+                                       "simple_restitution": RAIL_RESTITUTION}}
+cases.append({
+    "name": "two-rail-position-simple-rails",
+    "description": "The same shot on rails that follow the simple rule, the one the derivation "
+                   "uses: the cue ball must stop within "
+                   f"{POSITION_RADIUS_M} m of the derived point",
+    "scene": simple_rails,
+    "expect": {"pocketed": ["1"], "no_foul": True,
+               "cue_ball_stops_in": {"circle": [r4(stop[0]), r4(stop[1]), POSITION_RADIUS_M]}},
 })
 
 suite = {

@@ -54,7 +54,8 @@ TEST(NormalGenerator, DeviatesHaveMeanZeroVarianceOneAndNormalTails) {
   EXPECT_NEAR(m.variance, 1, kStandardErrors * std::sqrt(2.0 / (kSamples - 1)));
   // P(|Z| > 2) = 0.0455003; a binomial count's standard error.
   const double p = 0.04550026;
-  EXPECT_NEAR(beyond_two / double(kSamples), p, kStandardErrors * std::sqrt(p * (1 - p) / kSamples));
+  EXPECT_NEAR(beyond_two / double(kSamples), p,
+              kStandardErrors * std::sqrt(p * (1 - p) / kSamples));
 }
 
 TEST(ExecutionNoise, EachErrorHasTheConfiguredSigmaAndNoBias) {
@@ -105,7 +106,8 @@ TEST(ExecutionNoise, ZeroSigmasLeaveTheShotAsIntended) {
   ExecutionNoise none{0, 0, 0, 0};
   NormalGenerator normal(1);
   physics::CueShot shot{1.5, 0.3, 0.05, 0.1, -0.2};
-  const physics::CueShot same = perturbedShot(shot, drawExecutionError(none, kPoolRadius_m, &normal));
+  const physics::CueShot same =
+      perturbedShot(shot, drawExecutionError(none, kPoolRadius_m, &normal));
   EXPECT_EQ(same.speed_mps, shot.speed_mps);
   EXPECT_EQ(same.heading_rad, shot.heading_rad);
   EXPECT_EQ(same.elevation_rad, shot.elevation_rad);

@@ -57,9 +57,9 @@ TEST(ShotOutcome, ReadsFirstHitCushionsBeforeItAndPocketsFromTheEvents) {
 }
 
 TEST(ShotOutcome, APocketedCueBallIsAFoulEvenAfterAHit) {
-  const SceneRun run = handMadeRun(
-      {contact(EventKind::BallBall, 0, 1, -1), contact(EventKind::Pocket, 0, -1, 4)},
-      {true, false, false});
+  const SceneRun run =
+      handMadeRun({contact(EventKind::BallBall, 0, 1, -1), contact(EventKind::Pocket, 0, -1, 4)},
+                  {true, false, false});
   const ShotOutcome outcome = shotOutcome(run, "cue");
   EXPECT_TRUE(outcome.cue_ball_pocketed);
   EXPECT_EQ(outcome.foul, Foul::CueBallPocketed);
@@ -67,10 +67,10 @@ TEST(ShotOutcome, APocketedCueBallIsAFoulEvenAfterAHit) {
 }
 
 TEST(ShotOutcome, TouchingNoBallIsAFoulAndEveryCushionCounts) {
-  const SceneRun run = handMadeRun({contact(EventKind::Cushion, 0, -1, 0),
-                                    contact(EventKind::Cushion, 0, -1, 7),
-                                    contact(EventKind::BallBall, 1, 2, -1)},  // not the cue ball
-                                   {false, false, false});
+  const SceneRun run =
+      handMadeRun({contact(EventKind::Cushion, 0, -1, 0), contact(EventKind::Cushion, 0, -1, 7),
+                   contact(EventKind::BallBall, 1, 2, -1)},  // not the cue ball
+                  {false, false, false});
   const ShotOutcome outcome = shotOutcome(run, "cue");
   EXPECT_FALSE(outcome.first_hit.has_value());
   EXPECT_EQ(outcome.cushions_before_first_hit, 2);
@@ -84,11 +84,11 @@ TEST(ShotOutcome, TheStruckBallNeedNotBeCalledCue) {
 }
 
 TEST(ShotOutcome, AStraightFullHitOnARealTableHitsTheBallAndKeepsTheCueBallUp) {
-  const Scene scene = sceneFromJson(
-      nlohmann::json::parse(R"({"table": "pool-9ft", "ball_set": "pool",
+  const Scene scene =
+      sceneFromJson(nlohmann::json::parse(R"({"table": "pool-9ft", "ball_set": "pool",
         "balls": {"cue": [-0.5, 0.0], "1": [0.0, 0.0]},
         "shot": {"aim_at": "1", "speed_mps": 1.0}})"),
-      "test");
+                    "test");
   const ShotOutcome outcome = shotOutcome(runScene(scene), "cue");
   EXPECT_EQ(outcome.first_hit.value_or("none"), "1");
   EXPECT_EQ(outcome.cushions_before_first_hit, 0);

@@ -57,12 +57,12 @@ TEST(SuiteParsing, ErrorsNameTheFileTheCaseAndTheKey) {
     const char* expect;
     const char* key;
   } bad[] = {
-      {R"({"pocketed": ["1"], "potted": ["1"]})", "potted"},          // unknown key
-      {R"({"first_hit": 1})", "first_hit"},                           // wrong type
-      {R"({"first_hit": "cue"})", "first_hit"},                       // the cue ball itself
-      {R"({"pocketed": ["9"]})", "pocketed"},                         // not in the scene
-      {R"({"pocketed": []})", "pocketed"},                            // empty
-      {R"({"no_foul": false})", "no_foul"},                           // false expects nothing
+      {R"({"pocketed": ["1"], "potted": ["1"]})", "potted"},  // unknown key
+      {R"({"first_hit": 1})", "first_hit"},                   // wrong type
+      {R"({"first_hit": "cue"})", "first_hit"},               // the cue ball itself
+      {R"({"pocketed": ["9"]})", "pocketed"},                 // not in the scene
+      {R"({"pocketed": []})", "pocketed"},                    // empty
+      {R"({"no_foul": false})", "no_foul"},                   // false expects nothing
       {R"({"min_cushions_before_object_ball": -1})", "min_cushions_before_object_ball"},
       {R"({"cue_ball_stops_in": {"circle": [0, 0, -0.1]}})", "circle"},
       {R"({"cue_ball_stops_in": {"circle": [0, 0]}})", "circle"},
@@ -249,32 +249,34 @@ TEST(Wilson, MatchesTheTextbookIntervals) {
   // Wilson (1927) score intervals at 95 %: 0/10 -> [0, 0.2775], 5/10 -> [0.2366, 0.7634],
   // 10/10 -> [0.7225, 1].
   constexpr double kTolerance = 5e-5;  // the reference values' last digit
+  constexpr double kRounding = 1e-12;  // bounds that are exactly 0 or 1 in exact arithmetic
   ProbabilityEstimate p = wilsonEstimate(0, 10);
-  EXPECT_EQ(p.low, 0.0);
+  EXPECT_NEAR(p.low, 0.0, kRounding);
   EXPECT_NEAR(p.high, 0.2775, kTolerance);
   p = wilsonEstimate(5, 10);
   EXPECT_NEAR(p.low, 0.2366, kTolerance);
   EXPECT_NEAR(p.high, 0.7634, kTolerance);
   p = wilsonEstimate(10, 10);
   EXPECT_NEAR(p.low, 0.7225, kTolerance);
-  EXPECT_EQ(p.high, 1.0);
+  EXPECT_NEAR(p.high, 1.0, kRounding);
   EXPECT_THROW(wilsonEstimate(3, 2), std::invalid_argument);
   EXPECT_THROW(wilsonEstimate(0, 0), std::invalid_argument);
 }
 
-// A lone cue ball rolled about 0.5 m, and a circle around the noise-free stop that the speed error
-// (0.075 m/s, about 15 % of the distance) lets it reach about half the time.
+// A lone cue ball rolled about 0.48 m (0.3 m/s cue, natural roll), and a circle of 0.16 m around
+// the noise-free stop: the speed error (0.075 m/s, a quarter of the speed, so about half the
+// distance) leaves it inside about half the time.
 SuiteCase loneRollCase() {
   const nlohmann::json scene = nlohmann::json::parse(R"({"table": "pool-9ft", "ball_set": "pool",
-      "balls": {"cue": [-0.8, 0.0]}, "shot": {"heading_deg": 0, "speed_mps": 0.97, "height": 0.4}})");
+      "balls": {"cue": [-0.8, 0.0]},
+      "shot": {"heading_deg": 0, "speed_mps": 0.3, "height": 0.4}})");
   const Scene s = sceneFromJson(scene, "t");
   const Eigen::Vector2d stop = shotOutcome(runScene(s), "cue").cue_ball_final_m;
-  nlohmann::json suite = {{"cases",
-                           {{{"name", "roll"},
-                             {"scene", scene},
-                             {"expect",
-                              {{"cue_ball_stops_in",
-                                {{"circle", {stop.x(), stop.y(), 0.06}}}}}}}}}};
+  nlohmann::json suite = {
+      {"cases",
+       {{{"name", "roll"},
+         {"scene", scene},
+         {"expect", {{"cue_ball_stops_in", {{"circle", {stop.x(), stop.y(), 0.16}}}}}}}}}};
   return suiteFromJson(suite, "t").cases[0];
 }
 

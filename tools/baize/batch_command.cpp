@@ -60,6 +60,7 @@ nlohmann::json outcomeJson(const engine::ShotOutcome& outcome, const engine::Sce
 // carry an "id", which is echoed and otherwise ignored.
 engine::Scene lineScene(nlohmann::json document, const std::string& source,
                         const std::string& folder) {
+  engine::JsonReader(document, source);  // refuses anything but an object, naming the line
   document.erase("id");
   if (!document.contains("scene")) return engine::sceneFromJson(document, source);
   const engine::JsonReader reader(document, source);
@@ -70,8 +71,9 @@ engine::Scene lineScene(nlohmann::json document, const std::string& source,
     scene_source = (std::filesystem::path(folder) / reader.text("scene")).string();
     scene = engine::JsonReader::parseFile(scene_source);
   } else if (!scene.is_object()) {
-    reader.reject("scene", "a scene object or the path of a scene file (relative to the input's "
-                           "folder; standard input: the working directory)");
+    reader.reject("scene",
+                  "a scene object or the path of a scene file (relative to the input's "
+                  "folder; standard input: the working directory)");
   }
   if (reader.has("shot")) {
     reader.object("shot");
@@ -81,8 +83,8 @@ engine::Scene lineScene(nlohmann::json document, const std::string& source,
 }
 
 // One result line; `failed` is set when the line could not be run.
-std::string runLine(const InputLine& line, const std::string& input_name,
-                    const std::string& folder, bool* failed) {
+std::string runLine(const InputLine& line, const std::string& input_name, const std::string& folder,
+                    bool* failed) {
   nlohmann::json out;
   out["line"] = line.number;
   const std::string source = input_name + ":" + std::to_string(line.number);

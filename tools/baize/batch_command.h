@@ -1,5 +1,5 @@
-// `baize batch [INPUT] [--threads N]`: shots as JSON lines in, one JSON result line per shot out, in
-// input order and identical whatever the thread count (docs/positional.md, "Batch runs").
+// `baize batch [INPUT] [--threads N]`: shots as JSON lines in, one JSON result line per shot out,
+// in input order and identical whatever the thread count (docs/positional.md, "Batch runs").
 #pragma once
 
 namespace CLI {

@@ -93,10 +93,10 @@ int runCheck(const CheckFlags& flags) {
   const engine::Suite suite = engine::loadSuite(flags.suite);
 
   std::cout << "suite: " << flags.suite << " (" << suite.cases.size() << " cases"
-            << (flags.noise_samples > 0 ? ", " + std::to_string(flags.noise_samples) +
-                                              " noisy samples each, seed " +
-                                              std::to_string(flags.seed)
-                                        : "")
+            << (flags.noise_samples > 0
+                    ? ", " + std::to_string(flags.noise_samples) + " noisy samples each, seed " +
+                          std::to_string(flags.seed)
+                    : "")
             << ")\n";
   int passed = 0, failed = 0, errors = 0;
   std::ostringstream cases_xml;
@@ -128,7 +128,8 @@ int runCheck(const CheckFlags& flags) {
     errors += !result.error.empty();
     cases_xml << "  <testcase classname=\""
               << xmlEscaped(std::filesystem::path(flags.suite).stem().string()) << "\" name=\""
-              << xmlEscaped(c.name) << "\" time=\"" << seconds << "\">\n";
+              << xmlEscaped(c.name) << "\" time=\"" << std::fixed << std::setprecision(6) << seconds
+              << "\">\n";
     if (!result.error.empty()) {
       cases_xml << "    <error message=\"" << xmlEscaped(result.error) << "\"/>\n";
     } else if (!result.passed) {
@@ -145,8 +146,8 @@ int runCheck(const CheckFlags& flags) {
   if (junit) {
     junit->stream() << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                     << "<testsuite name=\"" << xmlEscaped(flags.suite) << "\" tests=\""
-                    << suite.cases.size() << "\" failures=\"" << failed - errors
-                    << "\" errors=\"" << errors << "\">\n"
+                    << suite.cases.size() << "\" failures=\"" << failed - errors << "\" errors=\""
+                    << errors << "\">\n"
                     << cases_xml.str() << "</testsuite>\n";
     junit->commit();
   }
@@ -158,7 +159,8 @@ int runCheck(const CheckFlags& flags) {
 void addCheckCommand(CLI::App& parent) {
   auto flags = std::make_shared<CheckFlags>();
   CLI::App* command = parent.add_subcommand(
-      "check", "Run a shot suite: pass/fail per case with the measured values (docs/positional.md)");
+      "check",
+      "Run a shot suite: pass/fail per case with the measured values (docs/positional.md)");
   command->add_option("suite", flags->suite, "the suite file (JSON)")->required();
   command->add_option("--junit", flags->junit_path, "also write a JUnit XML report here");
   command->add_option("--noise", flags->noise_samples,

@@ -13,6 +13,7 @@
 #include "tools/baize/cushion_command.h"
 #include "tools/baize/simulate_command.h"
 #include "tools/baize/stress_command.h"
+#include "tools/baize/sweep_command.h"
 
 int main(int argc, char** argv) {
   using namespace baize::tools;
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   addCushionCommand(app);
   addSimulateCommand(app);
   addStressCommand(app);
+  addSweepCommand(app);
 
   CLI::App* bench = app.add_subcommand("bench", "Measure the speed and accuracy of the models");
   bench->require_subcommand(1, 1);
