@@ -61,6 +61,32 @@ assert rows[1]["error"] == "" and rows[1]["cue_x_m"] != "", rows[1]
 assert "miscue" in rows[3]["error"] and rows[3]["cue_x_m"] == "", rows[3]
 PY
 
+# --noise: the spread of a lone cue ball's roll. Struck at 0.3 m/s with natural roll it leaves at
+# v0 = 1.75 * 0.3 / 1.7148 = 0.3061 m/s and rolls d = v0^2 / (2 mu_r g) = 0.478 m. The speed error
+# (0.075 m/s on the cue, 0.0765 m/s on the ball, e = 0.25 of v0) spreads d = d0 (1 + e)^2 along the
+# line: sd = d0 sqrt(4 e^2 + 2 e^4) = 0.243 m; the aim error (0.125 deg) across it: about
+# 0.125 deg * sqrt(E[d^2]) = 1.13 mm. The tip errors add nothing on a level cue without squirt.
+cat >"$work/roll.json" <<'JSON'
+{"table": "pool-9ft", "ball_set": "pool", "balls": {"cue": [-0.8, 0.0]},
+ "shot": {"heading_deg": 0, "speed_mps": 0.3, "height": 0.4}}
+JSON
+"$baize" sweep "$work/roll.json" --vary speed=0.3:0.3:1 --noise 400 --seed 4 >"$work/noise-a.csv" ||
+  fail "--noise exited $?"
+"$baize" sweep "$work/roll.json" --vary speed=0.3:0.3:1 --noise 400 --seed 4 >"$work/noise-b.csv"
+cmp -s "$work/noise-a.csv" "$work/noise-b.csv" || fail "--noise with the same seed differs"
+python3 - "$work/noise-a.csv" <<'PY'
+import csv, math, sys
+(r,) = list(csv.DictReader(open(sys.argv[1])))
+# 400 samples: the sample standard deviation has a relative standard error of about 5 % (more for
+# the skewed (1 + e)^2); 15 % allows three of them.
+tolerance = 0.15
+major, minor = float(r["cue_sd_major_m"]), float(r["cue_sd_minor_m"])
+assert abs(major / 0.243 - 1) < tolerance, major
+assert abs(minor / 0.00113 - 1) < tolerance, minor
+assert abs(float(r["cue_major_axis_deg"])) < 1, r  # along the roll, the x axis
+assert float(r["p_cue_pocketed"]) == 0 and float(r["p_miscue"]) == 0, r
+PY
+
 for bad in "--vary spin=0:1:0.1" "--vary speed=2:1:0.1" "--vary speed=1:2:0" "--vary speed=1:2" \
   "--vary speed=1:2:1 --vary speed=1:2:1" ""; do
   set +e
