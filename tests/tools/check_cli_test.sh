@@ -65,6 +65,30 @@ assert float(cases["rolls-alone"].get("time")) >= 0
 PY
 [[ -e "$work/junit.xml.tmp" ]] && fail "a temporary file was left behind"
 
+# A scene by path (relative to the suite), a shot override, and a case name XML must escape. The
+# override turns the shot onto ball 1 (the file's heading would miss it): a level centre hit at
+# 1 m/s leaves at 1.75 / 1.3148 = 1.331 m/s, rolls after 0.221 m, meets the ball at 0.928 m/s and
+# follows 0.333 m from the contact point at x = -0.057 (the follow closed form of
+# tools/positional_suite.py): x = 0.276.
+mkdir -p "$work/scenes"
+cat >"$work/scenes/straight.json" <<'JSON'
+{"table": "pool-9ft", "ball_set": "pool", "balls": {"cue": [-0.5, 0.0], "1": [0.0, 0.0]},
+ "shot": {"heading_deg": 90, "speed_mps": 0.2}}
+JSON
+cat >"$work/by-path.json" <<'JSON'
+{"cases": [{"name": "a<b & \"c\" 'd'", "scene": "scenes/straight.json",
+            "shot": {"aim_at": "1", "speed_mps": 1.0},
+            "expect": {"first_hit": "1", "cue_ball_stops_in": {"rectangle": [0.26, -0.01, 0.29, 0.01]}}}]}
+JSON
+out=$("$baize" check "$work/by-path.json" --junit "$work/by-path.xml") || fail "by-path exited $?: $out"
+grep -q "^PASS a<b & \"c\" 'd' | " <<<"$out" || fail "by-path: $out"
+python3 - "$work/by-path.xml" <<'PY'
+import sys
+import xml.etree.ElementTree as ET
+(case,) = ET.parse(sys.argv[1]).getroot().findall("testcase")
+assert case.get("name") == "a<b & \"c\" 'd'", case.get("name")
+PY
+
 # --noise: probabilities with intervals under each case, the same for the same seed, and the
 # pass/fail verdict still the noise-free shot's.
 noisy() { "$baize" check "$root/assets/suites/positional-drills.json" --noise 20 --seed "$1"; }
