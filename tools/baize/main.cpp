@@ -3,27 +3,33 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "tools/baize/batch_command.h"
 #include "tools/baize/bench_accuracy_command.h"
 #include "tools/baize/bench_cushion_command.h"
 #include "tools/baize/bench_render_command.h"
 #include "tools/baize/bench_shots_command.h"
 #include "tools/baize/chart_command.h"
+#include "tools/baize/check_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_command.h"
 #include "tools/baize/render_command.h"
 #include "tools/baize/simulate_command.h"
 #include "tools/baize/stress_command.h"
+#include "tools/baize/sweep_command.h"
 
 int main(int argc, char** argv) {
   using namespace baize::tools;
   CLI::App app{"Baize: an event-based pool and snooker table simulator", "baize"};
   app.require_subcommand(1, 1);
 
+  addBatchCommand(app);
   addChartCommand(app);
+  addCheckCommand(app);
   addCushionCommand(app);
   addSimulateCommand(app);
   addRenderCommand(app);
   addStressCommand(app);
+  addSweepCommand(app);
 
   CLI::App* bench = app.add_subcommand("bench", "Measure the speed and accuracy of the models");
   bench->require_subcommand(1, 1);

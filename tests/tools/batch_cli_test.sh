@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# baize batch, run the way a user runs it: JSON lines in, one result line per shot out in input
+# order, identical for 1 and 2 threads; bad lines reported with their line number without stopping
+# the batch; standard input and scene paths.
+# Usage: batch_cli_test.sh path/to/baize
+set -euo pipefail
+baize=$1
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+python3 "$root/tools/batch_shots.py" 300 --seed 5 >"$work/shots.jsonl"
+"$baize" batch "$work/shots.jsonl" --threads 1 >"$work/one.jsonl" || fail "--threads 1 exited $?"
+"$baize" batch "$work/shots.jsonl" --threads 2 >"$work/two.jsonl" || fail "--threads 2 exited $?"
+cmp -s "$work/one.jsonl" "$work/two.jsonl" || fail "1 and 2 threads give different output"
+# Standard input gives the same results too.
+"$baize" batch --threads 2 <"$work/shots.jsonl" >"$work/stdin.jsonl" || fail "stdin exited $?"
+cmp -s "$work/one.jsonl" "$work/stdin.jsonl" || fail "standard input gives different output"
+
+python3 - "$work/shots.jsonl" "$work/one.jsonl" <<'PY'
+import json, sys
+shots = [json.loads(l) for l in open(sys.argv[1])]
+results = [json.loads(l) for l in open(sys.argv[2])]
+assert len(results) == len(shots), (len(results), len(shots))
+for n, (shot, r) in enumerate(zip(shots, results), start=1):
+    assert r["line"] == n and r["id"] == shot["id"], r
+    assert "error" not in r, r
+    assert set(r["final_m"]) == {"cue", "1"}, r
+    pocketed = {p["ball"] for p in r["pocketed"]}
+    # A pocketed ball has no final position; one on the table has one inside the cushions.
+    for ball, at in r["final_m"].items():
+        assert (at is None) == (ball in pocketed), r
+        if at is not None:
+            assert abs(at[0]) <= 1.27 and abs(at[1]) <= 0.635, r
+    assert r["cue_ball_pocketed"] == ("cue" in pocketed), r
+    foul = "cue ball pocketed" if r["cue_ball_pocketed"] else (
+        "no ball hit" if r["first_hit"] is None else "none")
+    assert r["foul"] == foul, r
+    assert r["first_hit"] in (None, "1") and r["events"] >= 1, r
+PY
+
+# Bad lines: each gets an error result naming its line, the others still run, exit status 1.
+scene='{"table": "pool-9ft", "ball_set": "pool", "balls": {"cue": [0, 0], "1": [0.5, 0]}, "shot": {"aim_at": "1", "speed_mps": 1}}'
+mkdir -p "$work/scenes"
+echo "$scene" >"$work/scenes/straight.json"
+{
+  echo "{\"id\": \"first\", ${scene:1}"
+  echo '{"id": 7, "table": "pool-9ft"'
+  echo ''
+  echo '{"id": "typo", "table": "pool-9ft", "ball_set": "pool", "balls": {"cue": [0, 0]}, "shot": {"speed_mps": 1, "heading_deg": 0, "spin": 1}}'
+  echo '{"scene": "scenes/straight.json", "shot": {"aim_at": "1", "speed_mps": 2}, "id": "by-path"}'
+  echo '[1, 2]'
+  echo '{"scene": "scenes/missing.json"}'
+} >"$work/mixed.jsonl"
+set +e
+"$baize" batch "$work/mixed.jsonl" --threads 2 >"$work/mixed-out.jsonl" 2>"$work/mixed-err.txt"
+status=$?
+set -e
+[[ $status == 1 ]] || fail "bad lines must give exit status 1, got $status"
+grep -q "4 of 6 lines failed" "$work/mixed-err.txt" || fail "stderr: $(cat "$work/mixed-err.txt")"
+python3 - "$work/mixed-out.jsonl" <<'PY'
+import json, sys
+r = [json.loads(l) for l in open(sys.argv[1])]
+assert [x["line"] for x in r] == [1, 2, 4, 5, 6, 7], [x["line"] for x in r]  # line 3 is blank
+ok = {x["line"]: x for x in r if "error" not in x}
+assert set(ok) == {1, 5}, r
+assert ok[1]["id"] == "first" and ok[1]["first_hit"] == "1"
+assert ok[5]["id"] == "by-path" and ok[5]["first_hit"] == "1"
+err = {x["line"]: x["error"] for x in r if "error" in x}
+assert "mixed.jsonl:2: not valid JSON" in err[2], err[2]
+assert r[1]["id"] == 7 if "id" in r[1] else True
+assert "mixed.jsonl:4" in err[4] and "spin" in err[4], err[4]
+assert "mixed.jsonl:6" in err[6], err[6]
+assert "missing.json" in err[7], err[7]
+PY
+
+# A bad flag or input: exit 2.
+set +e
+"$baize" batch "$work/nope.jsonl" >/dev/null 2>&1; status=$?
+set -e
+[[ $status == 2 ]] || fail "a missing input must exit 2, got $status"
+set +e
+"$baize" batch "$work/shots.jsonl" --threads -1 >/dev/null 2>&1; status=$?
+set -e
+[[ $status == 2 ]] || fail "--threads -1 must exit 2, got $status"
+echo "batch CLI: ok"

@@ -1,0 +1,196 @@
+#include "tools/baize/batch_command.h"
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <thread>
+#include <vector>
+
+#include "engine/json_reader.h"
+#include "engine/scene.h"
+#include "engine/shot_outcome.h"
+#include "engine/shot_suite.h"
+#include "tools/baize/cli_errors.h"
+
+namespace baize::tools {
+namespace {
+
+// Lines read before they are run and written: bounds the memory and lets results stream out of a
+// pipe, while giving every thread plenty of shots per chunk.
+constexpr std::size_t kChunkLines = 4096;
+// More threads than this is a typo, not a machine.
+constexpr int kMaxThreads = 1024;
+
+struct BatchFlags {
+  std::string input = "-";  // "-": standard input
+  int threads = 0;          // 0: the hardware concurrency
+};
+
+struct InputLine {
+  long number = 0;  // 1-based line number in the input
+  std::string text;
+};
+
+nlohmann::json outcomeJson(const engine::ShotOutcome& outcome, const engine::SceneRun& run) {
+  nlohmann::json out;
+  out["first_hit"] = outcome.first_hit ? nlohmann::json(*outcome.first_hit) : nlohmann::json();
+  out["pocketed"] = nlohmann::json::array();
+  for (const engine::PocketedBall& p : outcome.pocketed) {
+    out["pocketed"].push_back({{"ball", p.ball}, {"pocket", engine::pocketNames().at(p.pocket)}});
+  }
+  out["cue_ball_pocketed"] = outcome.cue_ball_pocketed;
+  out["cushions_before_first_hit"] = outcome.cushions_before_first_hit;
+  out["foul"] = engine::foulName(outcome.foul);
+  out["events"] = outcome.events;
+  out["end_time_s"] = run.result.end_time_s;
+  nlohmann::json final_positions = nlohmann::json::object();
+  for (const engine::FinalBall& b : outcome.final_balls) {
+    final_positions[b.id] =
+        b.pocketed ? nlohmann::json() : nlohmann::json::array({b.position_m.x(), b.position_m.y()});
+  }
+  out["final_m"] = final_positions;
+  return out;
+}
+
+// The scene of one line: a scene object, or {"scene": path or object, "shot": {...}}; either may
+// carry an "id", which is echoed and otherwise ignored.
+engine::Scene lineScene(nlohmann::json document, const std::string& source,
+                        const std::string& folder) {
+  engine::JsonReader(document, source);  // refuses anything but an object, naming the line
+  document.erase("id");
+  if (!document.contains("scene")) return engine::sceneFromJson(document, source);
+  const engine::JsonReader reader(document, source);
+  reader.requireKeys({"scene"}, {"shot"});
+  nlohmann::json scene = document.at("scene");
+  std::string scene_source = source;
+  if (scene.is_string()) {
+    scene_source = (std::filesystem::path(folder) / reader.text("scene")).string();
+    scene = engine::JsonReader::parseFile(scene_source);
+  } else if (!scene.is_object()) {
+    reader.reject("scene",
+                  "a scene object or the path of a scene file (relative to the input's "
+                  "folder; standard input: the working directory)");
+  }
+  if (reader.has("shot")) {
+    reader.object("shot");
+    scene["shot"] = document.at("shot");
+  }
+  return engine::sceneFromJson(scene, scene_source);
+}
+
+// One result line; `failed` is set when the line could not be run.
+std::string runLine(const InputLine& line, const std::string& input_name, const std::string& folder,
+                    bool* failed) {
+  nlohmann::json out;
+  out["line"] = line.number;
+  const std::string source = input_name + ":" + std::to_string(line.number);
+  try {
+    nlohmann::json document;
+    try {
+      document = nlohmann::json::parse(line.text);
+    } catch (const nlohmann::json::exception& e) {
+      throw std::invalid_argument(source + ": not valid JSON (" + e.what() +
+                                  ") is not allowed: each line must be one JSON object");
+    }
+    if (document.is_object() && document.contains("id")) out["id"] = document.at("id");
+    const engine::Scene scene = lineScene(document, source, folder);
+    const engine::SceneRun run = engine::runScene(scene);
+    const nlohmann::json result = outcomeJson(engine::shotOutcome(run, scene.cue_ball), run);
+    out.update(result);
+    *failed = false;
+  } catch (const std::exception& e) {
+    out["error"] = e.what();
+    *failed = true;
+  }
+  return out.dump();
+}
+
+int runBatch(const BatchFlags& flags) {
+  if (flags.threads < 0 || flags.threads > kMaxThreads) {
+    rejectFlag("--threads", flags.threads,
+               "0 (the hardware concurrency) to " + std::to_string(kMaxThreads));
+  }
+  const int threads = flags.threads > 0
+                          ? flags.threads
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const bool from_stdin = flags.input == "-";
+  std::ifstream file;
+  if (!from_stdin) {
+    file.open(flags.input);
+    if (!file) {
+      throw UsageError("input " + flags.input +
+                       " cannot be opened: it must be a readable file of JSON lines, or - for "
+                       "standard input");
+    }
+  }
+  std::istream& in = from_stdin ? std::cin : file;
+  const std::string input_name = from_stdin ? "stdin" : flags.input;
+  const std::string folder =
+      from_stdin ? "" : std::filesystem::path(flags.input).parent_path().string();
+
+  long number = 0, shots = 0, failures = 0;
+  std::vector<InputLine> chunk;
+  std::string text;
+  bool more = true;
+  while (more) {
+    chunk.clear();
+    while (chunk.size() < kChunkLines && (more = static_cast<bool>(std::getline(in, text)))) {
+      ++number;
+      if (text.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank: no shot
+      chunk.push_back({number, text});
+    }
+    std::vector<std::string> results(chunk.size());
+    std::vector<char> failed(chunk.size(), 0);
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+      for (std::size_t i = next++; i < chunk.size(); i = next++) {
+        bool line_failed = false;
+        results[i] = runLine(chunk[i], input_name, folder, &line_failed);
+        failed[i] = line_failed;
+      }
+    };
+    std::vector<std::thread> pool;
+    const int used = std::min<int>(threads, static_cast<int>(chunk.size()));
+    for (int t = 1; t < used; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    for (std::size_t i = 0; i < chunk.size(); ++i) {
+      std::cout << results[i] << '\n';
+      failures += failed[i];
+    }
+    shots += static_cast<long>(chunk.size());
+    std::cout.flush();
+  }
+  if (!std::cout) throw std::runtime_error("standard output could not be written");
+  if (failures > 0) {
+    std::cerr << "baize batch: " << failures << " of " << shots
+              << " lines failed (their result lines carry \"error\")\n";
+    return kExitFailure;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addBatchCommand(CLI::App& parent) {
+  auto flags = std::make_shared<BatchFlags>();
+  CLI::App* command = parent.add_subcommand(
+      "batch", "Run shots given as JSON lines; one JSON result line per shot, in input order");
+  command->add_option("input", flags->input,
+                      "file of JSON lines (default -: standard input); docs/positional.md");
+  command->add_option("--threads", flags->threads,
+                      "worker threads (default 0: the hardware concurrency)");
+  command->callback([flags] {
+    int status = 0;
+    if (const int error = runReportingErrors("batch", [&] { status = runBatch(*flags); })) {
+      throw CLI::RuntimeError(error);
+    }
+    if (status != 0) throw CLI::RuntimeError(status);
+  });
+}
+
+}  // namespace baize::tools

@@ -1,0 +1,249 @@
+#include "tools/baize/sweep_command.h"
+
+#include <CLI/CLI.hpp>
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "engine/execution_noise.h"
+#include "engine/scene.h"
+#include "engine/shot_outcome.h"
+#include "engine/shot_suite.h"
+#include "physics/value_text.h"
+#include "tools/baize/atomic_file.h"
+#include "tools/baize/cli_errors.h"
+
+namespace baize::tools {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180;
+// A grid end within this many steps of a grid point counts as on it: "0.5:4:0.25" reaches 4
+// although 3.5 / 0.25 may round below 14.
+constexpr double kGridEndSlack_steps = 1e-9;
+// Points per sweep: a million shots is minutes of work; more is a typo in a step.
+constexpr long kMaxPoints = 1000000;
+
+struct Axis {
+  std::string name;  // speed, aim, tip-height, tip-side, elevation
+  double start = 0, stop = 0, step = 0;
+  long count = 0;
+  double at(long i) const { return start + static_cast<double>(i) * step; }
+};
+
+struct SweepFlags {
+  std::string scene;
+  std::vector<std::string> vary;
+  std::string csv_path;
+  std::string object;     // empty: any ball but the cue ball
+  int noise_samples = 0;  // 0: no execution error columns
+  std::uint64_t seed = 1;
+};
+
+// Samples per grid point allowed with --noise: a bound that keeps a typo from running for days.
+constexpr int kMaxNoiseSamples = 100000;
+
+std::string number(double value) {
+  std::ostringstream out;
+  out << std::setprecision(10) << value;
+  return out.str();
+}
+
+bool objectPocketed(const engine::ShotOutcome& o, const std::string& object) {
+  for (const engine::PocketedBall& p : o.pocketed) {
+    if (p.ball != o.cue_ball && (object.empty() || p.ball == object)) return true;
+  }
+  return false;
+}
+
+// The point's shot under execution error: how often the object ball and the cue ball fell, how
+// often the tip offset miscued, and the spread of the cue ball's finishing positions (mean and the
+// standard deviations along the principal axes of their covariance: the 1-sigma ellipse).
+std::string noiseColumns(const engine::Scene& scene, const SweepFlags& flags, long point) {
+  const engine::ExecutionNoise noise;  // the defaults (physics-notes section 4)
+  engine::Scene sample = scene;
+  int object = 0, cue = 0, miscues = 0, on_table = 0;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d products = Eigen::Matrix2d::Zero();
+  for (int s = 0; s < flags.noise_samples; ++s) {
+    engine::NormalGenerator normal(engine::sampleSeed(flags.seed, static_cast<std::uint64_t>(point),
+                                                      static_cast<std::uint64_t>(s)));
+    sample.shot = engine::perturbedShot(
+        scene.shot, engine::drawExecutionError(noise, scene.ball_set.radius_m, &normal));
+    engine::ShotOutcome o;
+    try {
+      o = engine::shotOutcome(engine::runScene(sample), sample.cue_ball);
+    } catch (const std::exception&) {  // a miscue (or a run over the event budget)
+      ++miscues;
+      continue;
+    }
+    object += objectPocketed(o, flags.object);
+    cue += o.cue_ball_pocketed;
+    if (!o.cue_ball_pocketed) {
+      ++on_table;
+      sum += o.cue_ball_final_m;
+      products += o.cue_ball_final_m * o.cue_ball_final_m.transpose();
+    }
+  }
+  const double n = flags.noise_samples;
+  std::string columns = number(object / n) + ',' + number(cue / n) + ',' + number(miscues / n);
+  if (on_table < 2) return columns + ",,,,,";
+  const Eigen::Vector2d mean = sum / on_table;
+  const Eigen::Matrix2d covariance =
+      (products - on_table * mean * mean.transpose()) / (on_table - 1);
+  // Principal axes of a symmetric 2x2 matrix in closed form.
+  const double half_trace = (covariance(0, 0) + covariance(1, 1)) / 2;
+  const double half_gap = std::hypot((covariance(0, 0) - covariance(1, 1)) / 2, covariance(0, 1));
+  const double major_deg =
+      0.5 * std::atan2(2 * covariance(0, 1), covariance(0, 0) - covariance(1, 1)) / kDegToRad;
+  return columns + ',' + number(mean.x()) + ',' + number(mean.y()) + ',' +
+         number(std::sqrt(std::max(0.0, half_trace + half_gap))) + ',' +
+         number(std::sqrt(std::max(0.0, half_trace - half_gap))) + ',' + number(major_deg);
+}
+
+const char* kParameterHelp =
+    "speed (cue speed, m/s), aim (degrees added to the scene's heading), tip-height and tip-side "
+    "(units of R), elevation (deg)";
+
+Axis parseAxis(const std::string& spec) {
+  const auto reject = [&](const std::string& why) -> Axis {
+    throw UsageError("--vary " + spec + " is not allowed: " + why);
+  };
+  const std::size_t equals = spec.find('=');
+  if (equals == std::string::npos) return reject("it must be NAME=START:STOP:STEP");
+  Axis axis;
+  axis.name = spec.substr(0, equals);
+  if (axis.name != "speed" && axis.name != "aim" && axis.name != "tip-height" &&
+      axis.name != "tip-side" && axis.name != "elevation") {
+    return reject(std::string("NAME must be one of ") + kParameterHelp);
+  }
+  std::istringstream range(spec.substr(equals + 1));
+  char colon1 = 0, colon2 = 0;
+  if (!(range >> axis.start >> colon1 >> axis.stop >> colon2 >> axis.step) || colon1 != ':' ||
+      colon2 != ':' || !range.eof()) {
+    return reject("the range must be START:STOP:STEP, three numbers");
+  }
+  if (!std::isfinite(axis.start) || !std::isfinite(axis.stop) || !(axis.step > 0) ||
+      !std::isfinite(axis.step) || axis.stop < axis.start) {
+    return reject("it needs finite numbers with START <= STOP and STEP > 0");
+  }
+  axis.count =
+      static_cast<long>(std::floor((axis.stop - axis.start) / axis.step + kGridEndSlack_steps)) + 1;
+  if (axis.count > kMaxPoints) return reject("too many points");
+  return axis;
+}
+
+void setParameter(const Axis& axis, double value, const physics::CueShot& base,
+                  physics::CueShot* shot) {
+  if (axis.name == "speed") shot->speed_mps = value;
+  if (axis.name == "aim") shot->heading_rad = base.heading_rad + value * kDegToRad;
+  if (axis.name == "tip-height") shot->height_offset = value;
+  if (axis.name == "tip-side") shot->side_offset = value;
+  if (axis.name == "elevation") shot->elevation_rad = value * kDegToRad;
+}
+
+void runSweep(const SweepFlags& flags) {
+  if (flags.vary.empty() || flags.vary.size() > 2) {
+    throw UsageError("--vary is needed once or twice (one or two parameters), got " +
+                     std::to_string(flags.vary.size()));
+  }
+  if (flags.noise_samples < 0 || flags.noise_samples > kMaxNoiseSamples) {
+    rejectFlag(
+        "--noise", flags.noise_samples,
+        "a number of samples per grid point in [0, " + std::to_string(kMaxNoiseSamples) + "]");
+  }
+  std::vector<Axis> axes;
+  for (const std::string& spec : flags.vary) axes.push_back(parseAxis(spec));
+  if (axes.size() == 2 && axes[0].name == axes[1].name) {
+    throw UsageError("--vary " + axes[1].name + " is given twice: vary two different parameters");
+  }
+  const long rows = axes.size() == 1 ? axes[0].count : axes[0].count * axes[1].count;
+  if (rows > kMaxPoints) {
+    throw UsageError("the grid has " + std::to_string(rows) + " points: at most " +
+                     std::to_string(kMaxPoints) + " are allowed");
+  }
+  std::unique_ptr<AtomicFile> csv;
+  if (!flags.csv_path.empty()) csv = std::make_unique<AtomicFile>(flags.csv_path, "--csv");
+  engine::Scene scene = engine::loadScene(flags.scene);
+  if (!flags.object.empty()) {
+    bool found = false;
+    for (const engine::PlacedBall& b : scene.balls) found = found || b.id == flags.object;
+    if (!found || flags.object == scene.cue_ball) {
+      throw UsageError("--object " + flags.object +
+                       " is not allowed: it must be a ball of the scene other than the cue ball");
+    }
+  }
+  std::ostream& out = csv ? csv->stream() : std::cout;
+  for (const Axis& a : axes) out << a.name << ',';
+  out << "cue_x_m,cue_y_m,cue_pocketed,object_pocketed,first_hit,foul,pocketed,events,error";
+  if (flags.noise_samples > 0) {
+    out << ",p_object_pocketed,p_cue_pocketed,p_miscue,cue_mean_x_m,cue_mean_y_m,cue_sd_major_m,"
+           "cue_sd_minor_m,cue_major_axis_deg";
+  }
+  out << '\n';
+  const physics::CueShot base = scene.shot;
+  const long inner = axes.size() == 2 ? axes[1].count : 1;
+  for (long row = 0; row < rows; ++row) {
+    const long i = row / inner, j = row % inner;
+    scene.shot = base;
+    setParameter(axes[0], axes[0].at(i), base, &scene.shot);
+    out << number(axes[0].at(i)) << ',';
+    if (axes.size() == 2) {
+      setParameter(axes[1], axes[1].at(j), base, &scene.shot);
+      out << number(axes[1].at(j)) << ',';
+    }
+    try {
+      const engine::ShotOutcome o = engine::shotOutcome(engine::runScene(scene), scene.cue_ball);
+      std::string pocketed;
+      for (const engine::PocketedBall& p : o.pocketed) {
+        pocketed += (pocketed.empty() ? "" : " ") + p.ball;
+      }
+      out << number(o.cue_ball_final_m.x()) << ',' << number(o.cue_ball_final_m.y()) << ','
+          << o.cue_ball_pocketed << ',' << objectPocketed(o, flags.object) << ','
+          << o.first_hit.value_or("") << ',' << engine::foulName(o.foul) << ',' << pocketed << ','
+          << o.events << ',';
+    } catch (const std::exception& e) {
+      // A grid point the strike refuses (a miscue) or that fails: a row saying why, no values.
+      std::string why = e.what();
+      for (char& c : why) {
+        if (c == ',' || c == '\n' || c == '"') c = ' ';
+      }
+      out << ",,,,,,,," << why;
+    }
+    if (flags.noise_samples > 0) out << ',' << noiseColumns(scene, flags, row);
+    out << '\n';
+  }
+  if (csv) csv->commit();
+}
+
+}  // namespace
+
+void addSweepCommand(CLI::App& parent) {
+  auto flags = std::make_shared<SweepFlags>();
+  CLI::App* command = parent.add_subcommand(
+      "sweep", "Simulate a scene's shot over a grid of one or two shot parameters (CSV)");
+  command->add_option("scene", flags->scene, "the scene file (JSON, docs/scenes.md)")->required();
+  command
+      ->add_option("--vary", flags->vary,
+                   std::string("NAME=START:STOP:STEP, once or twice; NAME: ") + kParameterHelp)
+      ->allow_extra_args(false);
+  command->add_option("--csv", flags->csv_path, "write the CSV here (default: standard output)");
+  command->add_option("--object", flags->object,
+                      "the ball whose pocketing object_pocketed reports (default: any ball but "
+                      "the cue ball)");
+  command->add_option("--noise", flags->noise_samples,
+                      "also run N samples per point with the default execution error and write "
+                      "pocketing probabilities and the spread of the cue ball's finishing "
+                      "positions");
+  command->add_option("--seed", flags->seed, "seed of the execution error (default 1)");
+  command->callback([flags] {
+    if (const int status = runReportingErrors("sweep", [&] { runSweep(*flags); })) {
+      throw CLI::RuntimeError(status);
+    }
+  });
+}
+
+}  // namespace baize::tools

@@ -1,0 +1,14 @@
+// `baize sweep SCENE.json --vary NAME=START:STOP:STEP [--vary ...] [--csv OUT] [--object ID]`:
+// simulates the scene's shot over a grid of one or two shot parameters and writes the outcomes as
+// CSV (docs/positional.md, "Position maps"). The PNG map waits for shot rendering.
+#pragma once
+
+namespace CLI {
+class App;
+}
+
+namespace baize::tools {
+
+void addSweepCommand(CLI::App& parent);
+
+}  // namespace baize::tools
