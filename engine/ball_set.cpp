@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 #include "engine/json_reader.h"
@@ -60,8 +62,17 @@ BallSet loadBallSet(const std::string& path) {
 std::vector<std::string> builtinBallSetNames() { return {"pool", "snooker"}; }
 
 BallSet builtinBallSet(const std::string& name) {
+  // Read once per process, as the built-in tables.
+  static std::mutex mutex;
+  static std::map<std::string, BallSet> loaded;
   for (const std::string& known : builtinBallSetNames()) {
-    if (name == known) return loadBallSet(assetsDirectory() + "/balls/" + name + ".json");
+    if (name != known) continue;
+    const std::lock_guard<std::mutex> lock(mutex);
+    auto found = loaded.find(name);
+    if (found == loaded.end())
+      found =
+          loaded.emplace(name, loadBallSet(assetsDirectory() + "/balls/" + name + ".json")).first;
+    return found->second;
   }
   throw std::invalid_argument("ball set name \"" + name +
                               "\" is not allowed: the built-in sets are pool, snooker");

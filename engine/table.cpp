@@ -1,6 +1,8 @@
 #include "engine/table.h"
 
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 #include "engine/json_reader.h"
@@ -311,8 +313,17 @@ std::vector<std::string> builtinTableNames() {
 }
 
 Table builtinTable(const std::string& name) {
+  // Read once per process: batch runs load a scene per shot, and the files do not change.
+  static std::mutex mutex;
+  static std::map<std::string, Table> loaded;
   for (const std::string& known : builtinTableNames()) {
-    if (name == known) return loadTable(assetsDirectory() + "/tables/" + name + ".json");
+    if (name != known) continue;
+    const std::lock_guard<std::mutex> lock(mutex);
+    auto found = loaded.find(name);
+    if (found == loaded.end())
+      found =
+          loaded.emplace(name, loadTable(assetsDirectory() + "/tables/" + name + ".json")).first;
+    return found->second;
   }
   std::string allowed;
   for (const std::string& known : builtinTableNames())
