@@ -62,6 +62,9 @@ constexpr double kVanishedSlipFraction = 10;
 // (|u| sin angle, which measures what the held law has missed) reaches this fraction of
 // (tolerance x velocity scale).
 constexpr double kCreepErrorFraction = 10;
+// The end of a held law is located where its error lies within this fraction of the limit either
+// side of it (where exactly does not matter; a loose bracket costs fewer trial steps).
+constexpr double kCreepEndLooseness = 0.5;
 // A slipping contact whose slip stays below this multiple of the vanishing threshold for this many
 // accepted steps has vanished: it lies within the integration's noise of zero and would only wander
 // there (a slip that friction can barely hold decays very slowly). Taking it as zero moves the
@@ -74,6 +77,9 @@ constexpr double kSteadyCreepFraction = 0.1;
 // A held contact whose cone could hold it again slips on (and its slip shrinks) only once its slip
 // is this multiple of the vanishing threshold, so that contacts do not flicker on rounding.
 constexpr double kReleaseSlipMultiple = 2;
+// The first step after a held contact slips again covers this fraction of the impulse over which
+// its small slip's direction turns (|u| / |du/dP|): about what the error control then accepts.
+constexpr double kReleaseStepFraction = 0.5;
 // Newton's method for phi*: the angle step of its numerical derivative (rad), the largest turn per
 // iteration (rad), the convergence test (rad) and the iteration limit.
 constexpr double kCreepAngleStep = 1e-6;
@@ -96,6 +102,8 @@ constexpr double kMinErrorShare = 0.2;
 constexpr double kStepSafety = 0.9;
 constexpr double kStepMinFactor = 1.0 / 3;
 constexpr double kStepMaxFactor = 3.0;
+// The order with which the error estimate scales with the step (see stepFactor).
+constexpr double kErrorOrder = 8;
 // First step as a fraction of M v_y0, the scale of the whole normal impulse.
 constexpr double kFirstStepFraction = 0.2;
 // The slip rate counts as affine in the friction direction when r(-x) misses r0 - W x by at most
@@ -182,7 +190,8 @@ double stepFactor(double error) {
   if (!(error > 0)) return kStepMaxFactor;
   // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
   // the share leaves that order (above the floor it is one lower, which the safety factor covers).
-  return std::clamp(kStepSafety * std::pow(error, -1.0 / 8), kStepMinFactor, kStepMaxFactor);
+  return std::clamp(kStepSafety * std::pow(error, -1.0 / kErrorOrder), kStepMinFactor,
+                    kStepMaxFactor);
 }
 
 // The root in (0, 1) of the cubic with values g0 > 0 and g1 <= 0 and slopes d0, d1 at 0 and 1
@@ -573,17 +582,33 @@ class ExactImpact {
     bool phase_end = true;
     int contact = 0;  // for a held contact's events
     double sign = 1;  // +1: its cone stops holding it; -1: its cone holds it again
+    bool creep_end = false;  // a held contact sliding along phi* has to slip as its own slip says
   };
   double eventValue(const Event& event, const State& z) const {
     if (event.phase_end) return compressing_ ? normalVelocity(z) : z[kWork] - work_target_;
+    if (event.creep_end) return creepRoom(event.contact, z);
     return event.sign * neededMargin(event.contact, z);
   }
+  // How much more error the held law of contact k may make at z before its contact has to slip as
+  // its own slip says (m/s; negative: past it): the limit less its slip's misalignment with phi*,
+  // or less its slip scaled so that the limit is reached at the regularizing slip. Positive, and
+  // at the limit, while its cone holds it (then the cone events apply).
+  double creepRoom(int k, const State& z) const {
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
+    const Laws laws = lawsAt(u, nullptr);
+    if (laws.stick[k]) return creep_error_limit_;
+    const double misalignment = std::abs(cross(u[k], laws.direction[k]));
+    const double size = u[k].norm() * (creep_error_limit_ / regularizing_slip_);
+    return creep_error_limit_ - std::max(misalignment, size);
+  }
   double eventSlope(const Event& event,
-                    const State& r) const {  // d/dtau from the rate there; -1: none
-    if (!event.phase_end) return -1;
+                    const State& r) const {  // d/dtau from the rate there; 0: none
+    if (!event.phase_end) return 0;
     return compressing_ ? -(c_ * r[kP] - s_ * r[kAy] + r[kBy]) / M_ : r[kWork];
   }
   double eventTolerance(const Event& event) const {
+    // The held law may end anywhere its error is of the order of its limit: located loosely.
+    if (event.creep_end) return kCreepEndLooseness * creep_error_limit_;
     if (!event.phase_end) return kEventResidualFraction * options_.tolerance;
     const double scale = compressing_ ? velocity_scale_ : M_ * velocity_scale_ * velocity_scale_;
     return kEventResidualFraction * options_.tolerance * scale;
@@ -628,6 +653,11 @@ class ExactImpact {
       trial = h * hermiteRoot(g_lo, slope_lo * h, g_hi, slope_hi * h);
     int side = 0;
     for (int it = 0; it < kMaxEventIterations; ++it) {
+      // A held law's error grows as the square of the impulse from where the slip was zero (the
+      // lag of a direction that turns at a steady rate): the root of g = A - B t^2 through the
+      // bracket's ends, which regula falsi would approach only slowly from the far end.
+      if (event.creep_end && g_lo > g_hi)
+        trial = std::sqrt(lo * lo + g_lo * (hi * hi - lo * lo) / (g_lo - g_hi));
       if (!(trial > lo && trial < hi) && g_lo > g_hi)
         trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
       if (!(trial > lo && trial < hi)) trial = 0.5 * (lo + hi);
@@ -695,6 +725,18 @@ class ExactImpact {
       const bool small = slipping(k) && u[k].norm() <= kStagnantSlipMultiple * vanished_slip_;
       contacts_[k].small_slip_steps = small ? contacts_[k].small_slip_steps + 1 : 0;
     }
+  }
+
+  // Held contact k slips as its own slip says from z on. Its slip is small, so its direction
+  // turns over impulses of about |u| / |du/dP|: the next step is cut to that scale instead of
+  // being found by rejections from the step the held law could take.
+  void release(int k, const State& z) {
+    const Eigen::Vector2d u = slip(k, z);
+    contacts_[k].direction = u.normalized();
+    setMode(k, ContactMode::Slip);
+    const double rate = slipRate(k, frictionFor(lawsAt(slips(z), nullptr))).norm();
+    if (rate > 0)
+      release_step_cap_ = std::min(release_step_cap_, kReleaseStepFraction * u.norm() / rate);
   }
 
   void hold(int k, const State& z) {
@@ -787,6 +829,11 @@ class ExactImpact {
   double regularizing_slip_ =
       0;  // m/s, s0 of the change of variable; also where held contacts slip
   double creep_error_limit_ = 0;  // m/s, kCreepErrorFraction
+  // N s: the longest impulse the next step may cover after a release (infinite: no cap)
+  double release_step_cap_ = std::numeric_limits<double>::infinity();
+  // The last accepted ordinary step (tau) and its error, for predictive step control (error 0:
+  // none since the last event or change).
+  double previous_step_ = 0, previous_error_ = 0;
   std::array<double, 2> mu_;
   std::array<Eigen::Vector2d, 2> slip0_;  // slips at P = 0, shifted by setSlip
   // Entries of the contact matrix M G: [[7/2, 0, cx, 0], [0, s^2 + 5/2, 0, cy], [cx, 0, 7/2, 0],
@@ -845,13 +892,13 @@ CushionImpactResult ExactImpact::run() {
         const double misalignment = laws.stick[k] ? 0 : std::abs(cross(u[k], laws.direction[k]));
         if (u[k].norm() >= regularizing_slip_ || laws.stick[k] ||
             misalignment >= creep_error_limit_) {
-          contacts_[k].direction = u[k].normalized();
-          setMode(k, ContactMode::Slip);
+          release(k, z);
           changed = true;
         }
       }
     }
     if (changed) {
+      previous_error_ = 0;
       k1 = rate(z);
       continue;
     }
@@ -863,6 +910,13 @@ CushionImpactResult ExactImpact::run() {
       const double margin = neededMargin(k, z);
       const Event candidate{false, k, margin < 0 ? -1.0 : 1.0};
       if (std::abs(margin) > eventTolerance(candidate)) events.push_back(candidate);
+      // While it slides along phi* its held law runs only as long as it is accurate: the step
+      // must not carry it past that (the error estimate cannot see it, the held law being smooth).
+      if (margin < 0) events.push_back(Event{false, k, 1.0, true});
+    }
+    if (std::isfinite(release_step_cap_)) {  // in tau, at the pace the rate sets here
+      h = std::min(h, release_step_cap_ / k1[kP]);
+      release_step_cap_ = std::numeric_limits<double>::infinity();
     }
     const Step step = rungeKuttaStep(z, k1, h);
     // Events are judged before the error, which may be large only because of what lies beyond them.
@@ -881,10 +935,25 @@ CushionImpactResult ExactImpact::run() {
         countSmallSlips(z);
         reportModes(z);
         if (tracing) sample(z);
+        // Predictive control (Gustafsson): where the accepted steps' errors follow a trend (a slip
+        // shrinking toward zero makes the right step shrink by a steady ratio) the next step
+        // follows it too, instead of overshooting into a rejection every other step.
+        double factor = stepFactor(step.error);
+        if (previous_error_ > 0 && step.error > 0) {
+          const double trend =
+              (h / previous_step_) * std::pow(previous_error_ / step.error, 1.0 / kErrorOrder);
+          factor = std::min(
+              factor, std::clamp(stepFactor(step.error) * trend, kStepMinFactor, kStepMaxFactor));
+        }
+        previous_step_ = h;
+        previous_error_ = step.error;
+        h *= factor;
+      } else {
+        h *= stepFactor(step.error);
       }
-      h *= stepFactor(step.error);
       continue;
     }
+    previous_error_ = 0;  // an event or a change breaks the trend
     int first = -1;
     Step landed;
     double length = std::numeric_limits<double>::infinity();
@@ -912,6 +981,12 @@ CushionImpactResult ExactImpact::run() {
       if (i != first && eventValue(events[i], z) > eventTolerance(events[i])) continue;
       if (events[i].phase_end) {
         phase_ends = true;
+        continue;
+      }
+      if (events[i].creep_end) {  // its held law has run its course: it slips as its slip says
+        const int k = events[i].contact;
+        const Eigen::Vector2d u = slip(k, z);
+        if (held(k) && u.norm() > 0) release(k, z);
         continue;
       }
       if (events[i].sign > 0) continue;  // it slides along phi* from here (reportModes records it)

@@ -837,6 +837,29 @@ TEST(CushionExactSolver, StepCrossingTwoEventsLandsOnTheEarlier) {
   }
 }
 
+// Balls as they reach cushions on a table: rolling (the cloth slip is exactly zero when the impact
+// starts, so the cloth contact slides off from rest along phi*) or nearly so, at every incidence,
+// with sidespin. Regression: the held law from rest ran for whole steps, far past where it is
+// accurate, and missed the converged outcome by up to 4e-7 V0.
+TEST(CushionExactSolver, DefaultToleranceIsWithinOneBillionthOnRollingBalls) {
+  const CushionParams p = poolCushion();
+  RandomImpacts random(kSeed + 22);
+  int from_rest = 0;
+  for (int i = 0; i < 150; ++i) {
+    const double speed = random.uniform(0.05, 6), R = p.radius_m;
+    const double alpha = degrees(random.uniform(1, 179));
+    const double topspin = (i % 2 == 0 ? 1.0 : random.uniform(0.8, 1.05)) * speed / R;
+    const BallVelocity in =
+        incomingBall(speed, alpha, topspin, random.uniform(-1.5, 1.5) * speed / R);
+    if (clothSlip(p, in).norm() <= kRoundoffRelative * speed) ++from_rest;
+    const CushionImpactResult fast = solveExact(p, in);
+    const CushionImpactResult converged = solveExact(p, in, kConvergedTolerance);
+    EXPECT_LE(velocityDifference(fast.after, converged.after, R), kSolverAccuracy * speed)
+        << "impact " << i;
+  }
+  EXPECT_GE(from_rest, 50) << "too few impacts start with the cloth slip at rest";
+}
+
 // The same relation over the stress program's range: pool balls up to 16 m/s, spin up to 3 V/R on
 // each axis, every incidence.
 TEST(CushionExactSolver, KineticEnergyNeverGrowsAtStressSpeedsAndSpins) {
