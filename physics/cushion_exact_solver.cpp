@@ -535,6 +535,15 @@ class ExactImpact {
     return r;
   }
 
+  // dz/dP from a rate dz/dtau (zero when P does not advance: nothing to remove then).
+  static State acrossPath(const State& rate) {
+    return rate[kP] > 0 ? State(rate / rate[kP]) : State(State::Zero());
+  }
+  // `error` less its part along the path, whose direction in z is `tangent` (dz/dP).
+  static State acrossPath(const State& error, const State& tangent) {
+    return error - error[kP] * tangent;
+  }
+
   Step rungeKuttaStep(const State& z, const State& k1, double h) {
     using namespace dp853;
     const State k2 = rate(z + h * (a21 * k1));
@@ -558,15 +567,25 @@ class ExactImpact {
     step.z = z + h * slope;
     step.rate_at_end = rate(step.z);
     // Combined estimate: |h| e5^2 / sqrt(n (e5^2 + w e3^2)), the norms scaled by the tolerances.
-    const State third = (slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12).cwiseQuotient(error_scale_);
-    const State fifth = (er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 +
-                         er11 * k11 + er12 * k12)
-                            .cwiseQuotient(error_scale_);
-    const double fifth_squared = fifth.squaredNorm(), third_squared = third.squaredNorm();
-    double denominator = fifth_squared + kThirdOrderWeight * third_squared;
-    if (!(denominator > 0)) denominator = 1;
-    const double error =
-        std::abs(h) * fifth_squared / std::sqrt(State::RowsAtCompileTime * denominator);
+    // Only the error across the path counts: an error along it (of P and of the rest in the
+    // proportions dz/dP) is an error of the parameter tau, which the change of variable makes
+    // large where sigma varies fast (a small slip) but which moves no state off the path. So the
+    // estimates are taken at equal P: the P error times dz/dP is removed. dz/dP is taken at both
+    // ends and the larger estimate kept: where the path turns sharply within the step (a friction
+    // reversing) neither end's direction stands for the step, and nothing is removed in effect.
+    const State third_raw = slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12;
+    const State fifth_raw =
+        er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 + er11 * k11 + er12 * k12;
+    double error = 0;
+    for (const State& tangent : {acrossPath(k1), acrossPath(step.rate_at_end)}) {
+      const State third = acrossPath(third_raw, tangent).cwiseQuotient(error_scale_);
+      const State fifth = acrossPath(fifth_raw, tangent).cwiseQuotient(error_scale_);
+      const double fifth_squared = fifth.squaredNorm(), third_squared = third.squaredNorm();
+      double denominator = fifth_squared + kThirdOrderWeight * third_squared;
+      if (!(denominator > 0)) denominator = 1;
+      error = std::max(
+          error, std::abs(h) * fifth_squared / std::sqrt(State::RowsAtCompileTime * denominator));
+    }
     // Error per unit step: a step may add error in proportion to the share of the impact's impulse
     // it covers, so the errors of many steps add up to about the tolerance, not to their number
     // times it.
@@ -760,7 +779,10 @@ class ExactImpact {
     if (coneMargin(k, frictionFor(laws)) >= kConeSlackRelative) return false;
     Eigen::Vector2d phi;
     if (!creepDirection(k, laws, u[k].normalized(), &phi)) return false;
-    if (std::abs(cross(u[k], phi)) >= 0.5 * creep_error_limit_) return false;
+    // Along phi*, not against it: a slip passing through zero lies on phi*'s line too, but
+    // sliding along phi* would reverse its friction before its slip has reached zero.
+    if (!(u[k].dot(phi) > 0) || std::abs(cross(u[k], phi)) >= 0.5 * creep_error_limit_)
+      return false;
     contacts_[k].creep = phi;
     return true;
   }
