@@ -94,6 +94,22 @@ std::vector<CushionShot> benchShots(int count) {
   return shots;
 }
 
+std::vector<CushionShot> rollingBenchShots(int count) {
+  std::mt19937_64 generator(kRollingBenchSeed);
+  std::vector<CushionShot> shots(count);
+  for (int i = 0; i < count; ++i) {
+    CushionShot& shot = shots[i];
+    shot.speed_mps = uniform(generator, 0.1, 2.5);
+    shot.angle_deg = uniform(generator, 1, 179);
+    const double near_roll = uniform(generator, 0.8, 1.05);  // drawn always: same stream for all
+    shot.topspin_k = i % 2 == 0 ? 1.0 : near_roll;
+    shot.sidespin_k = uniform(generator, -1.5, 1.5);
+  }
+  return shots;
+}
+
+int rollingBenchCount(int count) { return (count + 1) / 2; }
+
 std::vector<SolverSetting> benchSettings() {
   std::vector<SolverSetting> settings;
   for (int steps : {100, 1000, 5000, 50000}) {
@@ -120,7 +136,10 @@ BenchReport runCushionBench(const physics::CushionParams& params, int count, int
 
   BenchReport report;
   std::vector<BenchImpact> impacts;
-  for (const CushionShot& shot : benchShots(count)) {
+  std::vector<CushionShot> shots = benchShots(count);
+  const std::vector<CushionShot> rolling = rollingBenchShots(rollingBenchCount(count));
+  shots.insert(shots.end(), rolling.begin(), rolling.end());
+  for (const CushionShot& shot : shots) {
     const physics::BallVelocity incoming = incomingBallOf(shot, params.radius_m);
     const physics::BallVelocity reference =
         solveCushionShot(params, incoming, reference_setting).after;
