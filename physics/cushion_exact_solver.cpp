@@ -93,7 +93,12 @@ constexpr double kRateFloor = 1e-9;
 constexpr double kConeSlackRelative = 1e-12;
 // An event is located when its function is this small against its scale times the tolerance...
 constexpr double kEventResidualFraction = 1e-4;
-// ...or when the bracket on the step length is this many rounding units wide.
+// ...or when the bracket on the step length is this many rounding units wide. A phase end missed
+// by a correction shorter than this fraction of the trial step is reached by a second-order step
+// from the trial's end, if that step's error estimate (Euler's, which bounds Heun's) stays below
+// this fraction of the tolerance.
+constexpr double kPolishStepFraction = 1e-3;
+constexpr double kPolishErrorFraction = 1e-3;
 constexpr double kEventBracketUlps = 8;
 // The smallest share of the impulse scale a step's error allowance is cut to (error per unit step):
 // steps in the change of variable near a vanishing slip advance P very little and need no less.
@@ -690,6 +695,13 @@ class ExactImpact {
         return false;
       }
       const double g = eventValue(event, attempt.z);
+      Step polished;
+      double shift = 0;
+      if (polishOnto(event, attempt, trial, &shift, &polished)) {
+        *length = trial + shift;
+        *landed = polished;
+        return true;
+      }
       if (g <= tolerance_g) {  // at or past the event: a candidate landing
         hi = trial;
         g_hi = g;
@@ -712,6 +724,30 @@ class ExactImpact {
     // longest accurate stretch before it and look again from there.
     *length = lo > 0 ? lo : h * stepFactor(full.error);
     return false;
+  }
+
+  // A phase end missed by a little: the Newton correction of the step length is then so short
+  // that a second-order step (Heun, one evaluation) from the trial's end covers it to the
+  // tolerance, instead of another whole step from the start. Returns false (nothing spent but
+  // that evaluation) when the correction is not that short or does not land on the event.
+  bool polishOnto(const Event& event, const Step& from, double trial, double* shift,
+                  Step* polished) {
+    if (!event.phase_end) return false;
+    const double g = eventValue(event, from.z), tolerance_g = eventTolerance(event);
+    const double slope = eventSlope(event, from.rate_at_end);
+    if (std::abs(g) <= tolerance_g || !(slope < 0)) return false;
+    *shift = -g / slope;
+    if (!(std::abs(*shift) <= kPolishStepFraction * trial)) return false;
+    const State& start_rate = from.rate_at_end;
+    const State end_rate = rate(from.z + *shift * start_rate);
+    // Half the change of rate over the shift bounds Euler's error, and Heun's is far below it.
+    const State change = (0.5 * *shift) * (end_rate - start_rate);
+    if (!(change.cwiseQuotient(error_scale_).cwiseAbs().maxCoeff() <= kPolishErrorFraction))
+      return false;
+    polished->z = from.z + (0.5 * *shift) * (start_rate + end_rate);
+    polished->rate_at_end = end_rate;  // for trace sampling only: the caller recomputes the rate
+    polished->error = from.error;
+    return std::abs(eventValue(event, polished->z)) <= tolerance_g;
   }
 
   void setSlip(int k, const State& z, const Eigen::Vector2d& target) {
