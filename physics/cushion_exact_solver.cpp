@@ -28,18 +28,19 @@
 //
 // A slipping contact's friction is along u / |u|, which turns infinitely fast as u -> 0: in P the
 // equations are singular there, and steps in P chatter or crawl toward the zero. So the independent
-// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + L |du/dP|). In
-// tau a slip that vanishes decays exponentially and one that turns does so smoothly (its direction
-// turns at most about 1/L per unit tau), while a slip far from zero, or one that changes slowly,
-// runs at sigma ~ 1. When a slip is below the vanishing threshold the contact sticks if its
-// friction cone can hold it; otherwise it slips off along the one direction in which its slip grows
-// along itself. A stuck contact whose cone stops holding it (an event) slips along the friction it
-// needed, so friction stays continuous.
+// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + s0). In tau a
+// slip that vanishes decays exponentially and one that turns does so smoothly, while a slip far
+// above s0 runs at sigma ~ 1. When a slip is below the vanishing threshold the contact is held: it
+// sticks if its friction cone can hold it; otherwise it slides along the one direction phi* in
+// which its slip grows along itself, as long as that law is accurate (an event ends it). A stuck
+// contact whose cone stops holding it (an event) slips along the friction it needed, so friction
+// stays continuous.
 //
-// The system in tau is integrated with the Dormand-Prince 8(5,3) pair. The ends of compression
-// (v_y = 0) and restitution (W = (1 - e^2) W_c, eq. 17b) and the instants a stuck contact breaks
-// are events, located by Newton's method (or Illinois regula falsi) on the step length, each trial
-// a full Runge-Kutta step.
+// The system in tau is integrated with the Dormand-Prince 8(5,3) pair, its error measured across
+// the path (an error of tau alone moves no state off it). The ends of compression (v_y = 0) and
+// restitution (W = (1 - e^2) W_c, eq. 17b), the instants a stuck contact breaks and the end of a
+// held law are events, located by Newton's method (or Illinois regula falsi) on the step length,
+// each trial a full Runge-Kutta step, and a short last correction one Heun step.
 
 namespace baize::physics {
 namespace {
