@@ -66,6 +66,16 @@ constexpr double kCreepErrorFraction = 10;
 // The end of a held law is located where its error lies within this fraction of the limit either
 // side of it (where exactly does not matter; a loose bracket costs fewer trial steps).
 constexpr double kCreepEndLooseness = 0.5;
+// A held law's step is cut to end where its error is predicted to reach this fraction of the
+// limit (inside the looseness either side, so that the end is due at the next step's start), its
+// rate of turn probed over this fraction of the impulse scale (far above the 1e-10 rad to which
+// phi* is solved, far below the impact).
+constexpr double kCreepEndAim = 0.75;
+// A slipping contact is taken as sliding steadily along phi* only while its misalignment is below
+// this fraction of the limit: well below where a held law ends, so that a contact just released
+// is not held again at once.
+constexpr double kSteadyCreepHold = 0.25;
+constexpr double kCreepTurnProbe = 1e-3;
 // A slipping contact whose slip stays below this multiple of the vanishing threshold for this many
 // accepted steps has vanished: it lies within the integration's noise of zero and would only wander
 // there (a slip that friction can barely hold decays very slowly). Taking it as zero moves the
@@ -814,6 +824,38 @@ class ExactImpact {
     contacts_[k].creep = creepDirectionSearch(k, laws);
   }
 
+  // The step (in tau) after which held contact k, sliding along phi*, is predicted to have used
+  // kCreepEndAim of its held law's room, so that its end falls due at the next step's start
+  // instead of being crossed and located with a trial step. The misalignment grows as |u| times
+  // phi*'s turn since the slip lay along it: m(t) = m0 + beta t (|u0| + g t / 2), with g the
+  // slip's growth and beta phi*'s turn per unit tau (from phi* a little further along the path);
+  // the size term grows as |u0| + g t. Infinite when nothing can be predicted.
+  double heldLawStep(int k, const State& z, const State& k1) const {
+    const double none = std::numeric_limits<double>::infinity();
+    if (!(k1[kP] > 0)) return none;
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
+    const Laws here = lawsAt(u, nullptr);
+    if (here.stick[k]) return none;
+    const double nudge = kCreepTurnProbe * impulse_scale_ / k1[kP];  // tau
+    const Laws there = lawsAt(slips(z + nudge * k1), nullptr);
+    if (there.stick[k]) return none;
+    const double beta = std::abs(std::atan2(cross(here.direction[k], there.direction[k]),
+                                            here.direction[k].dot(there.direction[k]))) /
+                        nudge;
+    const double growth = slipRate(k, frictionFor(here)).norm() * k1[kP];  // m/s per unit tau
+    if (!(growth > 0)) return none;
+    const double size = u[k].norm(), misalignment = std::abs(cross(u[k], here.direction[k]));
+    const double aim = kCreepEndAim * creep_error_limit_;
+    const double by_size = (aim / creep_error_limit_ * regularizing_slip_ - size) / growth;
+    double by_turn = none;
+    if (beta > 0) {  // root of (g beta / 2) t^2 + (|u0| beta) t + (m0 - aim) = 0
+      const double a = 0.5 * growth * beta, b = size * beta, c = misalignment - aim;
+      by_turn = c < 0 ? (-b + std::sqrt(b * b - 4 * a * c)) / (2 * a) : 0;
+    }
+    const double t = std::min(by_size, by_turn);
+    return t > 0 ? t : none;
+  }
+
   // Whether slipping contact k slides steadily on the edge of its cone: its cone cannot hold it and
   // its small slip already lies along phi* (to within what the held law may miss). Such a slip
   // changes slowly while its direction is held stiffly in place; the held law describes it exactly
@@ -826,7 +868,7 @@ class ExactImpact {
     if (!creepDirection(k, laws, u[k].normalized(), &phi)) return false;
     // Along phi*, not against it: a slip passing through zero lies on phi*'s line too, but
     // sliding along phi* would reverse its friction before its slip has reached zero.
-    if (!(u[k].dot(phi) > 0) || std::abs(cross(u[k], phi)) >= 0.5 * creep_error_limit_)
+    if (!(u[k].dot(phi) > 0) || std::abs(cross(u[k], phi)) >= kSteadyCreepHold * creep_error_limit_)
       return false;
     contacts_[k].creep = phi;
     return true;
@@ -955,10 +997,9 @@ CushionImpactResult ExactImpact::run() {
         const Laws laws = lawsAt(u, nullptr);
         // While it slides along phi* the true slip lags phi* by an angle that grows with the slip,
         // and the friction along phi* misses that lag: the error shows as the slip's own
-        // misalignment with phi*, which bounds how long the held law may run.
-        const double misalignment = laws.stick[k] ? 0 : std::abs(cross(u[k], laws.direction[k]));
-        if (u[k].norm() >= regularizing_slip_ || laws.stick[k] ||
-            misalignment >= creep_error_limit_) {
+        // misalignment with phi*, which bounds how long the held law may run (creepRoom; its end
+        // is located loosely, and is due here once within that looseness).
+        if (laws.stick[k] || creepRoom(k, z) <= kCreepEndLooseness * creep_error_limit_) {
           release(k, z);
           changed = true;
         }
@@ -979,7 +1020,10 @@ CushionImpactResult ExactImpact::run() {
       if (std::abs(margin) > eventTolerance(candidate)) events.push_back(candidate);
       // While it slides along phi* its held law runs only as long as it is accurate: the step
       // must not carry it past that (the error estimate cannot see it, the held law being smooth).
-      if (margin < 0) events.push_back(Event{false, k, 1.0, true});
+      if (margin < 0) {
+        events.push_back(Event{false, k, 1.0, true});
+        h = std::min(h, heldLawStep(k, z, k1));
+      }
     }
     if (std::isfinite(release_step_cap_)) {  // in tau, at the pace the rate sets here
       h = std::min(h, release_step_cap_ / k1[kP]);
