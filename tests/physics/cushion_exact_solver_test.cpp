@@ -862,9 +862,9 @@ TEST(CushionExactSolver, DefaultToleranceIsWithinOneBillionthOnRollingBalls) {
 
 // A rolling ball hitting nearly head-on (from the shipped 9-ball break): the cloth slides off from
 // rest and the cushion slip passes through zero late in restitution, within about 1e-10 V0 of it.
-// The cost is the solver's (evaluations are deterministic, unlike times): it took 1097 and 931
+// The cost is the solver's (evaluations are deterministic, unlike times): it took 1097 and 930
 // evaluations before the held law's end was located and the step error taken across the path,
-// 665 and 667 after; the bound guards that with some room.
+// 728 and 668 after; the bound guards that with some room.
 constexpr long kRollingHeadOnEvaluationBudget = 800;
 
 TEST(CushionExactSolver, RollingBallNearlyHeadOnIsAccurateWithinItsEvaluationBudget) {
