@@ -28,18 +28,19 @@
 //
 // A slipping contact's friction is along u / |u|, which turns infinitely fast as u -> 0: in P the
 // equations are singular there, and steps in P chatter or crawl toward the zero. So the independent
-// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + L |du/dP|). In
-// tau a slip that vanishes decays exponentially and one that turns does so smoothly (its direction
-// turns at most about 1/L per unit tau), while a slip far from zero, or one that changes slowly,
-// runs at sigma ~ 1. When a slip is below the vanishing threshold the contact sticks if its
-// friction cone can hold it; otherwise it slips off along the one direction in which its slip grows
-// along itself. A stuck contact whose cone stops holding it (an event) slips along the friction it
-// needed, so friction stays continuous.
+// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + s0). In tau a
+// slip that vanishes decays exponentially and one that turns does so smoothly, while a slip far
+// above s0 runs at sigma ~ 1. When a slip is below the vanishing threshold the contact is held: it
+// sticks if its friction cone can hold it; otherwise it slides along the one direction phi* in
+// which its slip grows along itself, as long as that law is accurate (an event ends it). A stuck
+// contact whose cone stops holding it (an event) slips along the friction it needed, so friction
+// stays continuous.
 //
-// The system in tau is integrated with the Dormand-Prince 8(5,3) pair. The ends of compression
-// (v_y = 0) and restitution (W = (1 - e^2) W_c, eq. 17b) and the instants a stuck contact breaks
-// are events, located by Newton's method (or Illinois regula falsi) on the step length, each trial
-// a full Runge-Kutta step.
+// The system in tau is integrated with the Dormand-Prince 8(5,3) pair, its error measured across
+// the path (an error of tau alone moves no state off it). The ends of compression (v_y = 0) and
+// restitution (W = (1 - e^2) W_c, eq. 17b), the instants a stuck contact breaks and the end of a
+// held law are events, located by Newton's method (or Illinois regula falsi) on the step length,
+// each trial a full Runge-Kutta step, and a short last correction one Heun step.
 
 namespace baize::physics {
 namespace {
@@ -62,6 +63,19 @@ constexpr double kVanishedSlipFraction = 10;
 // (|u| sin angle, which measures what the held law has missed) reaches this fraction of
 // (tolerance x velocity scale).
 constexpr double kCreepErrorFraction = 10;
+// The end of a held law is located where its error lies within this fraction of the limit either
+// side of it (where exactly does not matter; a loose bracket costs fewer trial steps).
+constexpr double kCreepEndLooseness = 0.5;
+// A held law's step is cut to end where its error is predicted to reach this fraction of the
+// limit (inside the looseness either side, so that the end is due at the next step's start), its
+// rate of turn probed over this fraction of the impulse scale (far above the 1e-10 rad to which
+// phi* is solved, far below the impact).
+constexpr double kCreepEndAim = 0.75;
+// A slipping contact is taken as sliding steadily along phi* only while its misalignment is below
+// this fraction of the limit: well below where a held law ends, so that a contact just released
+// is not held again at once.
+constexpr double kSteadyCreepHold = 0.25;
+constexpr double kCreepTurnProbe = 1e-3;
 // A slipping contact whose slip stays below this multiple of the vanishing threshold for this many
 // accepted steps has vanished: it lies within the integration's noise of zero and would only wander
 // there (a slip that friction can barely hold decays very slowly). Taking it as zero moves the
@@ -74,6 +88,9 @@ constexpr double kSteadyCreepFraction = 0.1;
 // A held contact whose cone could hold it again slips on (and its slip shrinks) only once its slip
 // is this multiple of the vanishing threshold, so that contacts do not flicker on rounding.
 constexpr double kReleaseSlipMultiple = 2;
+// The first step after a held contact slips again covers this fraction of the impulse over which
+// its small slip's direction turns (|u| / |du/dP|): about what the error control then accepts.
+constexpr double kReleaseStepFraction = 0.5;
 // Newton's method for phi*: the angle step of its numerical derivative (rad), the largest turn per
 // iteration (rad), the convergence test (rad) and the iteration limit.
 constexpr double kCreepAngleStep = 1e-6;
@@ -87,15 +104,24 @@ constexpr double kRateFloor = 1e-9;
 constexpr double kConeSlackRelative = 1e-12;
 // An event is located when its function is this small against its scale times the tolerance...
 constexpr double kEventResidualFraction = 1e-4;
-// ...or when the bracket on the step length is this many rounding units wide.
+// ...or when the bracket on the step length is this many rounding units wide. A phase end missed
+// by a correction shorter than this fraction of the trial step is reached by a second-order step
+// from the trial's end, if that step's error estimate (Euler's, which bounds Heun's) stays below
+// this fraction of the tolerance.
+constexpr double kPolishStepFraction = 1e-3;
+constexpr double kPolishErrorFraction = 1e-3;
 constexpr double kEventBracketUlps = 8;
 // The smallest share of the impulse scale a step's error allowance is cut to (error per unit step):
 // steps in the change of variable near a vanishing slip advance P very little and need no less.
+// (Larger floors, 0.3 to 1, cost 3 to 10 % fewer evaluations but let rare impacts of the rolling
+// bench set exceed 1e-9 V0 at the default tolerance.)
 constexpr double kMinErrorShare = 0.2;
 // Step-size control of the embedded pair: safety factor and bounds on the change per step.
 constexpr double kStepSafety = 0.9;
 constexpr double kStepMinFactor = 1.0 / 3;
 constexpr double kStepMaxFactor = 3.0;
+// The order with which the error estimate scales with the step (see stepFactor).
+constexpr double kErrorOrder = 8;
 // First step as a fraction of M v_y0, the scale of the whole normal impulse.
 constexpr double kFirstStepFraction = 0.2;
 // The slip rate counts as affine in the friction direction when r(-x) misses r0 - W x by at most
@@ -182,7 +208,8 @@ double stepFactor(double error) {
   if (!(error > 0)) return kStepMaxFactor;
   // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
   // the share leaves that order (above the floor it is one lower, which the safety factor covers).
-  return std::clamp(kStepSafety * std::pow(error, -1.0 / 8), kStepMinFactor, kStepMaxFactor);
+  return std::clamp(kStepSafety * std::pow(error, -1.0 / kErrorOrder), kStepMinFactor,
+                    kStepMaxFactor);
 }
 
 // The root in (0, 1) of the cubic with values g0 > 0 and g1 <= 0 and slopes d0, d1 at 0 and 1
@@ -342,21 +369,25 @@ class ExactImpact {
     auto turn = [&](double phi, double* growth) {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
       const Eigen::Vector2d r = slipRate(k, frictionFor(laws));
-      if (growth) *growth = r.dot(laws.direction[k]);
+      *growth = r.dot(laws.direction[k]);
       return cross(laws.direction[k], r) / (r.norm() + kRateFloor / M_);
     };
-    double phi = std::atan2(guess.y(), guess.x());
+    // Secant iterations, started with a difference over a small angle: one evaluation of the
+    // rate per iteration (a central difference takes three), converging almost as fast from the
+    // close guesses it is given (the last phi*).
+    double phi = std::atan2(guess.y(), guess.x()), growth = 0;
+    double value = turn(phi, &growth);
+    double previous_phi = phi + kCreepAngleStep, previous_growth = 0;
+    double previous_value = turn(previous_phi, &previous_growth);
     for (int it = 0; it < kMaxCreepIterations; ++it) {
-      const double value = turn(phi, nullptr);
-      const double slope =
-          (turn(phi + kCreepAngleStep, nullptr) - turn(phi - kCreepAngleStep, nullptr)) /
-          (2 * kCreepAngleStep);
+      const double slope = (value - previous_value) / (phi - previous_phi);
       if (!(slope != 0)) break;
       const double change = std::clamp(-value / slope, -kCreepMaxTurn, kCreepMaxTurn);
+      previous_phi = phi;
+      previous_value = value;
       phi += change;
+      value = turn(phi, &growth);
       if (std::abs(change) <= kCreepAngleTolerance) {
-        double growth = 0;
-        turn(phi, &growth);
         if (!(growth > 0)) return false;
         *result = Eigen::Vector2d(std::cos(phi), std::sin(phi));
         return true;
@@ -526,6 +557,15 @@ class ExactImpact {
     return r;
   }
 
+  // Whether a slipping contact's slip turned by more than a right angle from `from` to `to`.
+  bool slipReversed(const State& from, const State& to) const {
+    const std::array<Eigen::Vector2d, 2> before = slips(from), after = slips(to);
+    for (int k = 0; k < 2; ++k) {
+      if (slipping(k) && !(before[k].dot(after[k]) > 0)) return true;
+    }
+    return false;
+  }
+
   Step rungeKuttaStep(const State& z, const State& k1, double h) {
     using namespace dp853;
     const State k2 = rate(z + h * (a21 * k1));
@@ -549,10 +589,22 @@ class ExactImpact {
     step.z = z + h * slope;
     step.rate_at_end = rate(step.z);
     // Combined estimate: |h| e5^2 / sqrt(n (e5^2 + w e3^2)), the norms scaled by the tolerances.
-    const State third = (slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12).cwiseQuotient(error_scale_);
-    const State fifth = (er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 +
-                         er11 * k11 + er12 * k12)
-                            .cwiseQuotient(error_scale_);
+    // Only the error across the path counts: an error along it (of P and of the rest in the
+    // proportions dz/dP at the step's end) is an error of the parameter tau, which the change of
+    // variable makes large where sigma varies fast (a small slip) but which moves the step's end
+    // along the path, not off it. So the estimates are taken at equal P. Not where a slip turned
+    // by more than a right angle within the step (it passed by zero): there the end's direction
+    // does not stand for the step, and the whole estimate counts.
+    State third = slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12;
+    State fifth =
+        er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 + er11 * k11 + er12 * k12;
+    if (!slipReversed(z, step.z) && step.rate_at_end[kP] > 0) {
+      const State tangent = step.rate_at_end / step.rate_at_end[kP];
+      third -= third[kP] * tangent;
+      fifth -= fifth[kP] * tangent;
+    }
+    third = third.cwiseQuotient(error_scale_);
+    fifth = fifth.cwiseQuotient(error_scale_);
     const double fifth_squared = fifth.squaredNorm(), third_squared = third.squaredNorm();
     double denominator = fifth_squared + kThirdOrderWeight * third_squared;
     if (!(denominator > 0)) denominator = 1;
@@ -573,17 +625,33 @@ class ExactImpact {
     bool phase_end = true;
     int contact = 0;  // for a held contact's events
     double sign = 1;  // +1: its cone stops holding it; -1: its cone holds it again
+    bool creep_end = false;  // a held contact sliding along phi* has to slip as its own slip says
   };
   double eventValue(const Event& event, const State& z) const {
     if (event.phase_end) return compressing_ ? normalVelocity(z) : z[kWork] - work_target_;
+    if (event.creep_end) return creepRoom(event.contact, z);
     return event.sign * neededMargin(event.contact, z);
   }
+  // How much more error the held law of contact k may make at z before its contact has to slip as
+  // its own slip says (m/s; negative: past it): the limit less its slip's misalignment with phi*,
+  // or less its slip scaled so that the limit is reached at the regularizing slip. Positive, and
+  // at the limit, while its cone holds it (then the cone events apply).
+  double creepRoom(int k, const State& z) const {
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
+    const Laws laws = lawsAt(u, nullptr);
+    if (laws.stick[k]) return creep_error_limit_;
+    const double misalignment = std::abs(cross(u[k], laws.direction[k]));
+    const double size = u[k].norm() * (creep_error_limit_ / regularizing_slip_);
+    return creep_error_limit_ - std::max(misalignment, size);
+  }
   double eventSlope(const Event& event,
-                    const State& r) const {  // d/dtau from the rate there; -1: none
-    if (!event.phase_end) return -1;
+                    const State& r) const {  // d/dtau from the rate there; 0: none
+    if (!event.phase_end) return 0;
     return compressing_ ? -(c_ * r[kP] - s_ * r[kAy] + r[kBy]) / M_ : r[kWork];
   }
   double eventTolerance(const Event& event) const {
+    // The held law may end anywhere its error is of the order of its limit: located loosely.
+    if (event.creep_end) return kCreepEndLooseness * creep_error_limit_;
     if (!event.phase_end) return kEventResidualFraction * options_.tolerance;
     const double scale = compressing_ ? velocity_scale_ : M_ * velocity_scale_ * velocity_scale_;
     return kEventResidualFraction * options_.tolerance * scale;
@@ -628,6 +696,11 @@ class ExactImpact {
       trial = h * hermiteRoot(g_lo, slope_lo * h, g_hi, slope_hi * h);
     int side = 0;
     for (int it = 0; it < kMaxEventIterations; ++it) {
+      // A held law's error grows as the square of the impulse from where the slip was zero (the
+      // lag of a direction that turns at a steady rate): the root of g = A - B t^2 through the
+      // bracket's ends, which regula falsi would approach only slowly from the far end.
+      if (event.creep_end && g_lo > g_hi)
+        trial = std::sqrt(lo * lo + g_lo * (hi * hi - lo * lo) / (g_lo - g_hi));
       if (!(trial > lo && trial < hi) && g_lo > g_hi)
         trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
       if (!(trial > lo && trial < hi)) trial = 0.5 * (lo + hi);
@@ -637,6 +710,13 @@ class ExactImpact {
         return false;
       }
       const double g = eventValue(event, attempt.z);
+      Step polished;
+      double shift = 0;
+      if (polishOnto(event, attempt, trial, &shift, &polished)) {
+        *length = trial + shift;
+        *landed = polished;
+        return true;
+      }
       if (g <= tolerance_g) {  // at or past the event: a candidate landing
         hi = trial;
         g_hi = g;
@@ -659,6 +739,30 @@ class ExactImpact {
     // longest accurate stretch before it and look again from there.
     *length = lo > 0 ? lo : h * stepFactor(full.error);
     return false;
+  }
+
+  // A phase end missed by a little: the Newton correction of the step length is then so short
+  // that a second-order step (Heun, one evaluation) from the trial's end covers it to the
+  // tolerance, instead of another whole step from the start. Returns false (nothing spent but
+  // that evaluation) when the correction is not that short or does not land on the event.
+  bool polishOnto(const Event& event, const Step& from, double trial, double* shift,
+                  Step* polished) {
+    if (!event.phase_end) return false;
+    const double g = eventValue(event, from.z), tolerance_g = eventTolerance(event);
+    const double slope = eventSlope(event, from.rate_at_end);
+    if (std::abs(g) <= tolerance_g || !(slope < 0)) return false;
+    *shift = -g / slope;
+    if (!(std::abs(*shift) <= kPolishStepFraction * trial)) return false;
+    const State& start_rate = from.rate_at_end;
+    const State end_rate = rate(from.z + *shift * start_rate);
+    // Half the change of rate over the shift bounds Euler's error, and Heun's is far below it.
+    const State change = (0.5 * *shift) * (end_rate - start_rate);
+    if (!(change.cwiseQuotient(error_scale_).cwiseAbs().maxCoeff() <= kPolishErrorFraction))
+      return false;
+    polished->z = from.z + (0.5 * *shift) * (start_rate + end_rate);
+    polished->rate_at_end = end_rate;  // for trace sampling only: the caller recomputes the rate
+    polished->error = from.error;
+    return std::abs(eventValue(event, polished->z)) <= tolerance_g;
   }
 
   void setSlip(int k, const State& z, const Eigen::Vector2d& target) {
@@ -697,6 +801,18 @@ class ExactImpact {
     }
   }
 
+  // Held contact k slips as its own slip says from z on. Its slip is small, so its direction
+  // turns over impulses of about |u| / |du/dP|: the next step is cut to that scale instead of
+  // being found by rejections from the step the held law could take.
+  void release(int k, const State& z) {
+    const Eigen::Vector2d u = slip(k, z);
+    contacts_[k].direction = u.normalized();
+    setMode(k, ContactMode::Slip);
+    const double rate = slipRate(k, frictionFor(lawsAt(slips(z), nullptr))).norm();
+    if (rate > 0)
+      release_step_cap_ = std::min(release_step_cap_, kReleaseStepFraction * u.norm() / rate);
+  }
+
   void hold(int k, const State& z) {
     contacts_[k].small_slip_steps = 0;
     const Eigen::Vector2d u = slip(k, z);
@@ -706,6 +822,38 @@ class ExactImpact {
     Laws laws = lawsAt(slips(z), nullptr);
     laws.stick[k] = true;
     contacts_[k].creep = creepDirectionSearch(k, laws);
+  }
+
+  // The step (in tau) after which held contact k, sliding along phi*, is predicted to have used
+  // kCreepEndAim of its held law's room, so that its end falls due at the next step's start
+  // instead of being crossed and located with a trial step. The misalignment grows as |u| times
+  // phi*'s turn since the slip lay along it: m(t) = m0 + beta t (|u0| + g t / 2), with g the
+  // slip's growth and beta phi*'s turn per unit tau (from phi* a little further along the path);
+  // the size term grows as |u0| + g t. Infinite when nothing can be predicted.
+  double heldLawStep(int k, const State& z, const State& k1) const {
+    const double none = std::numeric_limits<double>::infinity();
+    if (!(k1[kP] > 0)) return none;
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
+    const Laws here = lawsAt(u, nullptr);
+    if (here.stick[k]) return none;
+    const double nudge = kCreepTurnProbe * impulse_scale_ / k1[kP];  // tau
+    const Laws there = lawsAt(slips(z + nudge * k1), nullptr);
+    if (there.stick[k]) return none;
+    const double beta = std::abs(std::atan2(cross(here.direction[k], there.direction[k]),
+                                            here.direction[k].dot(there.direction[k]))) /
+                        nudge;
+    const double growth = slipRate(k, frictionFor(here)).norm() * k1[kP];  // m/s per unit tau
+    if (!(growth > 0)) return none;
+    const double size = u[k].norm(), misalignment = std::abs(cross(u[k], here.direction[k]));
+    const double aim = kCreepEndAim * creep_error_limit_;
+    const double by_size = (aim / creep_error_limit_ * regularizing_slip_ - size) / growth;
+    double by_turn = none;
+    if (beta > 0) {  // root of (g beta / 2) t^2 + (|u0| beta) t + (m0 - aim) = 0
+      const double a = 0.5 * growth * beta, b = size * beta, c = misalignment - aim;
+      by_turn = c < 0 ? (-b + std::sqrt(b * b - 4 * a * c)) / (2 * a) : 0;
+    }
+    const double t = std::min(by_size, by_turn);
+    return t > 0 ? t : none;
   }
 
   // Whether slipping contact k slides steadily on the edge of its cone: its cone cannot hold it and
@@ -718,7 +866,10 @@ class ExactImpact {
     if (coneMargin(k, frictionFor(laws)) >= kConeSlackRelative) return false;
     Eigen::Vector2d phi;
     if (!creepDirection(k, laws, u[k].normalized(), &phi)) return false;
-    if (std::abs(cross(u[k], phi)) >= 0.5 * creep_error_limit_) return false;
+    // Along phi*, not against it: a slip passing through zero lies on phi*'s line too, but
+    // sliding along phi* would reverse its friction before its slip has reached zero.
+    if (!(u[k].dot(phi) > 0) || std::abs(cross(u[k], phi)) >= kSteadyCreepHold * creep_error_limit_)
+      return false;
     contacts_[k].creep = phi;
     return true;
   }
@@ -787,6 +938,11 @@ class ExactImpact {
   double regularizing_slip_ =
       0;  // m/s, s0 of the change of variable; also where held contacts slip
   double creep_error_limit_ = 0;  // m/s, kCreepErrorFraction
+  // N s: the longest impulse the next step may cover after a release (infinite: no cap)
+  double release_step_cap_ = std::numeric_limits<double>::infinity();
+  // The last accepted ordinary step (tau) and its error, for predictive step control (error 0:
+  // none since the last event or change).
+  double previous_step_ = 0, previous_error_ = 0;
   std::array<double, 2> mu_;
   std::array<Eigen::Vector2d, 2> slip0_;  // slips at P = 0, shifted by setSlip
   // Entries of the contact matrix M G: [[7/2, 0, cx, 0], [0, s^2 + 5/2, 0, cy], [cx, 0, 7/2, 0],
@@ -841,17 +997,16 @@ CushionImpactResult ExactImpact::run() {
         const Laws laws = lawsAt(u, nullptr);
         // While it slides along phi* the true slip lags phi* by an angle that grows with the slip,
         // and the friction along phi* misses that lag: the error shows as the slip's own
-        // misalignment with phi*, which bounds how long the held law may run.
-        const double misalignment = laws.stick[k] ? 0 : std::abs(cross(u[k], laws.direction[k]));
-        if (u[k].norm() >= regularizing_slip_ || laws.stick[k] ||
-            misalignment >= creep_error_limit_) {
-          contacts_[k].direction = u[k].normalized();
-          setMode(k, ContactMode::Slip);
+        // misalignment with phi*, which bounds how long the held law may run (creepRoom; its end
+        // is located loosely, and is due here once within that looseness).
+        if (laws.stick[k] || creepRoom(k, z) <= kCreepEndLooseness * creep_error_limit_) {
+          release(k, z);
           changed = true;
         }
       }
     }
     if (changed) {
+      previous_error_ = 0;
       k1 = rate(z);
       continue;
     }
@@ -863,6 +1018,16 @@ CushionImpactResult ExactImpact::run() {
       const double margin = neededMargin(k, z);
       const Event candidate{false, k, margin < 0 ? -1.0 : 1.0};
       if (std::abs(margin) > eventTolerance(candidate)) events.push_back(candidate);
+      // While it slides along phi* its held law runs only as long as it is accurate: the step
+      // must not carry it past that (the error estimate cannot see it, the held law being smooth).
+      if (margin < 0) {
+        events.push_back(Event{false, k, 1.0, true});
+        h = std::min(h, heldLawStep(k, z, k1));
+      }
+    }
+    if (std::isfinite(release_step_cap_)) {  // in tau, at the pace the rate sets here
+      h = std::min(h, release_step_cap_ / k1[kP]);
+      release_step_cap_ = std::numeric_limits<double>::infinity();
     }
     const Step step = rungeKuttaStep(z, k1, h);
     // Events are judged before the error, which may be large only because of what lies beyond them.
@@ -881,10 +1046,25 @@ CushionImpactResult ExactImpact::run() {
         countSmallSlips(z);
         reportModes(z);
         if (tracing) sample(z);
+        // Predictive control (Gustafsson): where the accepted steps' errors follow a trend (a slip
+        // shrinking toward zero makes the right step shrink by a steady ratio) the next step
+        // follows it too, instead of overshooting into a rejection every other step.
+        double factor = stepFactor(step.error);
+        if (previous_error_ > 0 && step.error > 0) {
+          const double trend =
+              (h / previous_step_) * std::pow(previous_error_ / step.error, 1.0 / kErrorOrder);
+          factor = std::min(
+              factor, std::clamp(stepFactor(step.error) * trend, kStepMinFactor, kStepMaxFactor));
+        }
+        previous_step_ = h;
+        previous_error_ = step.error;
+        h *= factor;
+      } else {
+        h *= stepFactor(step.error);
       }
-      h *= stepFactor(step.error);
       continue;
     }
+    previous_error_ = 0;  // an event or a change breaks the trend
     int first = -1;
     Step landed;
     double length = std::numeric_limits<double>::infinity();
@@ -912,6 +1092,12 @@ CushionImpactResult ExactImpact::run() {
       if (i != first && eventValue(events[i], z) > eventTolerance(events[i])) continue;
       if (events[i].phase_end) {
         phase_ends = true;
+        continue;
+      }
+      if (events[i].creep_end) {  // its held law has run its course: it slips as its slip says
+        const int k = events[i].contact;
+        const Eigen::Vector2d u = slip(k, z);
+        if (held(k) && u.norm() > 0) release(k, z);
         continue;
       }
       if (events[i].sign > 0) continue;  // it slides along phi* from here (reportModes records it)
