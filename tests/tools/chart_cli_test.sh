@@ -175,7 +175,7 @@ expect_error 2 "--png is required" chart bench-cushion "$work/bench.csv"
 # engine; the event loop's error of 0 is drawn on a floor, so the table is accepted as it is.
 "$baize" bench accuracy --shots 1 --repeats 1 --csv "$work/accuracy.csv" >/dev/null ||
   fail "bench accuracy exited $?"
-grep -q '^event,exact,[^,]*,0,0$' "$work/accuracy.csv" || fail "test setup: the event row has no error 0"
+grep -q '^event,exact,[^,]*,0,0,all$' "$work/accuracy.csv" || fail "test setup: the event row has no error 0"
 "$baize" chart bench-accuracy "$work/accuracy.csv" --png "$work/accuracy.png" --width 480 \
   --height 320 >"$work/out" || fail "chart bench-accuracy exited $?"
 grep -qxF "wrote $work/accuracy.png" "$work/out" || fail "no 'wrote' line for the accuracy chart"
@@ -184,6 +184,20 @@ count_palette_colours 3 "$work/accuracy.png"  # event, fixed-step, box2d
 "$baize" chart bench-accuracy "$work/accuracy.csv" --png "$work/accuracy-again.png" --width 480 \
   --height 320 >/dev/null || fail "second chart bench-accuracy exited $?"
 cmp -s "$work/accuracy.png" "$work/accuracy-again.png" || fail "accuracy chart differs between runs"
+# With the "shots" column the rows of each subset make their own series: 3 engines x 2 subsets.
+python3 - "$work/accuracy.csv" "$work/subsets.csv" <<'EOF_PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+with open(sys.argv[2], "w") as out:
+    out.write("engine,setting,median_us,position_error_m,outcome_mismatch,shots\n")
+    for subset, scale in (("all", 1.0), ("no-breaks", 0.5)):
+        for r in rows:
+            error = float(r["position_error_m"]) * scale
+            out.write(f'{r["engine"]},{r["setting"]},{r["median_us"]},{error},{r["outcome_mismatch"]},{subset}\n')
+EOF_PY
+"$baize" chart bench-accuracy "$work/subsets.csv" --png "$work/subsets.png" --width 480 \
+  --height 320 >/dev/null || fail "chart bench-accuracy with subsets exited $?"
+count_palette_colours 6 "$work/subsets.png"
 # Only the event loop's rows: every error is 0, and the chart still draws them (on the default floor).
 head -2 "$work/accuracy.csv" >"$work/event-only.csv"
 "$baize" chart bench-accuracy "$work/event-only.csv" --png "$work/event-only.png" >/dev/null ||

@@ -30,6 +30,8 @@ render::LineChart benchAccuracyChart(const std::string& csv_path) {
   const size_t setting = table.column("setting");
   const size_t time = table.column("median_us");
   const size_t error = table.column("position_error_m");
+  const bool has_subset = table.hasColumn("shots");
+  const size_t subset = has_subset ? table.column("shots") : 0;
   if (table.rowCount() == 0) {
     throw std::invalid_argument(csv_path + ": no data rows: it must hold the bench's table");
   }
@@ -59,15 +61,24 @@ render::LineChart benchAccuracyChart(const std::string& csv_path) {
     std::string label;
   };
   std::vector<std::pair<std::string, std::vector<LabelledPoint>>> engines;  // in table order
+  bool floor_labelled = false;
   for (size_t row = 0; row < table.rowCount(); ++row) {
-    const std::string& name = table.text(row, engine);
+    // One series per engine and subset of shots ("all" needs no mention).
+    std::string name = table.text(row, engine);
+    if (has_subset && table.text(row, subset) != "all")
+      name += " (" + table.text(row, subset) + ")";
     auto found = std::find_if(engines.begin(), engines.end(),
                               [&](const auto& entry) { return entry.first == name; });
     if (found == engines.end()) found = engines.insert(engines.end(), {name, {}});
     const double e = table.number(row, error);
     const std::string& name_of_setting = table.text(row, setting);
     std::string label = name_of_setting;
-    if (e == 0) label = name_of_setting == "exact" ? "exact (0)" : name_of_setting + ": error 0";
+    if (e == 0) {
+      label = name_of_setting == "exact" ? "exact (0)" : name_of_setting + ": error 0";
+      // Zero-error points of several subsets sit on the floor side by side: label the first only.
+      if (floor_labelled) label.clear();
+      floor_labelled = true;
+    }
     found->second.push_back({{table.number(row, time), e > 0 ? e : floor_m}, label});
   }
   for (auto& [name, points] : engines) {
