@@ -7,6 +7,8 @@
 # - failing shots (forced: --max-events 20 makes most shots "hang") are written one file each:
 #   scene files that `baize simulate` refuses with the same max_events error, state files that
 #   `baize stress --replay` fails the same way; a passing shot replays as passing;
+# - "on the table" with pockets: a ball beyond a corner has escaped, a ball in a pocket mouth has
+#   not, and a table whose capture circles leave a pocket opening uncovered is refused;
 # - bad flags and bad replay files are refused with status 2 and a message naming the value.
 set -euo pipefail
 
@@ -123,6 +125,23 @@ grep -q "FAILED escape: ball 0: centre outside the cushion outline at t = 0 s" "
   fail "a ball outside the outline: $(cat "$work/r.txt")"
 "$baize" stress --replay "$work/mouth.json" >"$work/r.txt" || fail "a ball in the mouth failed: $(cat "$work/r.txt")"
 grep -q "passed every check" "$work/r.txt" || fail "a ball in the mouth: $(cat "$work/r.txt")"
+
+# A table whose corner capture circles are too small to cover the pocket openings: a ball could
+# pass the facings' ends unpocketed, so the escape check cannot work there and refuses the table.
+python3 - "$work" "$(dirname "$0")/../../assets/tables/pool-9ft.json" <<'EOF_PY'
+import json, sys
+table = json.load(open(sys.argv[2]))
+table["name"] = "small-capture"
+table["corner_pocket"]["capture_radius_m"] = 0.005
+json.dump(table, open(sys.argv[1] + "/small-capture.json", "w"))
+json.dump({"table": "small-capture.json", "ball_set": "pool", "balls": {"cue": [0, 0]},
+           "shot": {"speed_mps": 1, "heading_deg": 0}}, open(sys.argv[1] + "/small-capture-scene.json", "w"))
+EOF_PY
+status=0
+"$baize" stress --replay "$work/small-capture-scene.json" >/dev/null 2>"$work/err.txt" || status=$?
+[[ $status == 2 ]] || fail "a table with uncovered pocket openings replayed with status $status, want 2"
+grep -q "a ball can pass the ends of pocket 0's facings outside its capture circle" "$work/err.txt" ||
+  fail "uncovered pocket openings: $(cat "$work/err.txt")"
 
 # ---- 5. Bad flags and files are usage errors.
 for bad in "--shots 0" "--balls 1" "--balls 99" "--threads 0" "--max-seconds -1" "--max-events 0"; do

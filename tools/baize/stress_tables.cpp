@@ -50,6 +50,37 @@ void traceOutline(StressTable* t) {
   }
 }
 
+// The escape check's premise (stress_tables.h): a ball centre reaching the line that closes a
+// pocket's opening, R clear of both facings, is already inside the pocket's capture circle. Checked
+// at kCaptureSamples points along each closing line; a table that breaks it is refused.
+constexpr int kCaptureSamples = 1000;
+
+void checkCapturesCoverOpenings(const StressTable& t) {
+  const double R = t.params.cushion.radius_m;
+  const std::vector<engine::CushionSegment>& noses = t.geometry.cushions;
+  for (std::size_t k = 0; k < t.table.pockets.size(); ++k) {
+    if (noses.size() < 3 * k + 2 || noses[3 * k].pocket != static_cast<int>(k) ||
+        noses[3 * k + 1].pocket != static_cast<int>(k)) {
+      throw std::invalid_argument("table " + t.name + ": pocket " + std::to_string(k) +
+                                  "'s facings are not where engine/table.h lists them");
+    }
+    const engine::CushionSegment& entry = noses[3 * k];
+    const engine::CushionSegment& exit = noses[3 * k + 1];
+    for (int i = 0; i <= kCaptureSamples; ++i) {
+      const Eigen::Vector2d p =
+          entry.end_m + (static_cast<double>(i) / kCaptureSamples) * (exit.start_m - entry.end_m);
+      const bool reachable = entry.inward_normal.dot(p - entry.start_m) >= R &&
+                             exit.inward_normal.dot(p - exit.start_m) >= R;
+      if (reachable &&
+          (p - t.table.pockets[k].capture.centre_m).norm() >= t.table.pockets[k].capture.radius_m) {
+        throw std::invalid_argument(
+            "table " + t.name + ": a ball can pass the ends of pocket " + std::to_string(k) +
+            "'s facings outside its capture circle, so escapes cannot be told from pocketed balls");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 StressTable makeStressTable(StressTableId id) {
@@ -76,6 +107,7 @@ StressTable makeStressTable(StressTableId id) {
     t.params = engine::simulationParamsFor(scene);
   }
   traceOutline(&t);
+  checkCapturesCoverOpenings(t);
   return t;
 }
 
@@ -89,6 +121,7 @@ StressTable stressTableOfScene(const engine::Scene& scene) {
   t.geometry = engine::geometryOf(scene.table);
   t.params = engine::simulationParamsFor(scene);
   traceOutline(&t);
+  checkCapturesCoverOpenings(t);
   return t;
 }
 
