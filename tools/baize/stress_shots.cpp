@@ -41,6 +41,9 @@ constexpr double kTouchSlack_m = 1e-12;
 // when not at exactly the same computed instant; 1e-12 s is a few ulps of the arrival time.
 constexpr double kArrivalOffsetMin_s = 1e-12;
 constexpr double kArrivalOffsetMax_s = 1e-3;
+// A rail with an end within this distance of a pocket's mouth centre is "beside the pocket", m:
+// the mouth's half width plus about two ball diameters.
+constexpr double kBesidePocket_m = 0.15;
 // How often a generator tries a random placement before it settles for fewer balls.
 constexpr int kPlacementAttempts = 200;
 
@@ -278,10 +281,10 @@ std::optional<Eigen::Vector2d> ShotMaker::againstPocket(const StressTable& t, in
       for (const engine::CushionSegment& c : t.geometry.cushions) {
         const double reach = std::min((c.start_m - t.table.pockets[pocket].mouth_centre_m).norm(),
                                       (c.end_m - t.table.pockets[pocket].mouth_centre_m).norm());
-        if (c.pocket == pocket || reach < 0.15) near.push_back(&c);
+        if (c.pocket == pocket || reach < kBesidePocket_m) near.push_back(&c);
       }
       const engine::CushionSegment& c = *near[integer(0, static_cast<int>(near.size()) - 1)];
-      const double s = c.pocket == pocket ? uniform(0, 1) : uniform(0, 1);
+      const double s = uniform(0, 1);  // where along the nose
       p = c.start_m + s * (c.end_m - c.start_m) + R * c.inward_normal;
     } else if (where == 1) {  // touching a jaw's rounding
       const engine::JawArc& jaw = t.geometry.jaws[2 * pocket + integer(0, 1)];
