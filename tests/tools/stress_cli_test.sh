@@ -150,6 +150,11 @@ for bad in "--shots 0" "--balls 1" "--balls 99" "--threads 0" "--max-seconds -1"
   [[ $status == 2 ]] || fail "baize stress $bad exited $status, want 2"
   grep -q "is not allowed" "$work/err.txt" || fail "baize stress $bad: no message naming the value"
 done
+status=0
+"$baize" stress --shots 10 --failures "$work/no-such-dir" >/dev/null 2>"$work/err.txt" || status=$?
+[[ $status == 2 ]] || fail "--failures with a missing directory exited $status, want 2"
+grep -q "no-such-dir is not allowed: it must be an existing directory" "$work/err.txt" ||
+  fail "--failures with a missing directory: $(cat "$work/err.txt")"
 echo '{"format": "baize stress state", "table": "billiards", "max_events": 5, "balls": []}' >"$work/bad.json"
 status=0
 "$baize" stress --replay "$work/bad.json" >/dev/null 2>"$work/err.txt" || status=$?

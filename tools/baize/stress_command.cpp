@@ -67,6 +67,7 @@ struct Tally {
   std::map<std::string, long> failures_by_kind;  // kind -> shots failing that way
   std::map<std::string, long> shots_by_kind;     // shot kind -> shots
   std::vector<FailedShot> failed;
+  std::string error;  // what a thread's shot threw outside the checks, if anything
 
   void add(const Tally& other) {
     shots += other.shots;
@@ -195,10 +196,20 @@ Tally runShots(const StressFlags& flags, const StressTables& tables, bool* stopp
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
             << " s\n";
       }
-      StressShot made = makeStressShot(tables, flags.seed, shot, flags.max_balls);
-      engine::SimulationParams params = tables.of(made.table).params;
-      params.max_events = flags.max_events;
-      const ShotOutcome outcome = checkShot(tables.of(made.table), params, made.balls);
+      StressShot made;
+      ShotOutcome outcome;
+      try {
+        made = makeStressShot(tables, flags.seed, shot, flags.max_balls);
+        engine::SimulationParams params = tables.of(made.table).params;
+        params.max_events = flags.max_events;
+        outcome = checkShot(tables.of(made.table), params, made.balls);
+      } catch (const std::exception& e) {
+        // Not a failure of the event loop (checkShot records those) but of this program: stop the
+        // run and say which shot, rather than let the thread end the process.
+        tally->error = "shot " + std::to_string(shot) + ": " + e.what();
+        stop = true;
+        return;
+      }
       ++tally->shots;
       ++tally->shots_by_kind[stressShotKindName(made.kind)];
       tally->events += outcome.events;
@@ -214,6 +225,9 @@ Tally runShots(const StressFlags& flags, const StressTables& tables, bool* stopp
   for (int t = 1; t < flags.threads; ++t) threads.emplace_back(work, &tallies[t]);
   work(&tallies[0]);
   for (std::thread& thread : threads) thread.join();
+  for (const Tally& t : tallies) {
+    if (!t.error.empty()) throw std::logic_error("stress: making or checking " + t.error);
+  }
   Tally total;
   for (const Tally& t : tallies) total.add(t);
   std::sort(total.failed.begin(), total.failed.end(),
@@ -257,7 +271,8 @@ void runStress(const StressFlags& flags) {
     rejectFlag("--max-events", static_cast<double>(flags.max_events), "it must be >= 1");
   }
   if (!flags.failures_dir.empty() && !std::filesystem::is_directory(flags.failures_dir)) {
-    throw std::runtime_error("--failures " + flags.failures_dir + ": not a directory");
+    throw UsageError("--failures " + flags.failures_dir +
+                     " is not allowed: it must be an existing directory");
   }
   const StressTables tables = makeStressTables();
   const auto started = std::chrono::steady_clock::now();
