@@ -235,10 +235,11 @@ StressShot ShotMaker::nearSimultaneous(int max_balls) {
   StressShot shot;
   shot.kind = StressShotKind::NearSimultaneous;
   shot.table = t.id;
+  // The target well inside the table (m), so that both approaches fit.
   const Eigen::Vector2d target(uniform(-0.6, 0.6), uniform(-0.2, 0.2));
   std::vector<Eigen::Vector2d> places = {target};
   shot.balls = atRest(places);
-  const double arrival_s = uniform(0.05, 1.0);
+  const double arrival_s = uniform(0.05, 1.0);  // when they arrive, s
   const double first = uniform(0, 2 * M_PI);
   const double second = first + (integer(0, 3) ? uniform(M_PI / 3, M_PI) : M_PI / 3);
   for (int k = 0; k < 2; ++k) {
@@ -246,7 +247,7 @@ StressShot ShotMaker::nearSimultaneous(int max_balls) {
     const Eigen::Vector2d from(std::cos(angle), std::sin(angle)), across(-from.y(), from.x());
     // The offset of the path from the target's centre (0: head on), below 2R so it touches.
     const double impact = integer(0, 2) ? 0 : uniform(-1.9, 1.9) * R;
-    const double distance = uniform(0.05, 0.5) + 2 * R;
+    const double distance = uniform(0.05, 0.5) + 2 * R;  // centre to centre, m
     const Eigen::Vector2d at = target + distance * from + impact * across;
     if (!clear(t, places, at, false)) continue;
     const double travel_m = distance - std::sqrt(4 * R * R - impact * impact);
@@ -351,6 +352,8 @@ StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
   shot.table = t.id;
   std::vector<Eigen::Vector2d> places;  // places[0] is the cue ball
   double aim_deg = uniform(-180, 180);  // the heading, unless aimed at a ball below
+  // Aims the cue ball so that its line passes cut_R * R from the target's centre (|cut_R| < 2
+  // hits it: 0 full, near 2 thin).
   auto aimAt = [&](const Eigen::Vector2d& target, double cut_R) {
     const Eigen::Vector2d to = target - places[0];
     const double cut = std::asin(std::clamp(cut_R * R / std::max(to.norm(), 2 * R), -1.0, 1.0));
