@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs `baize chart` the way a user does, on a real sweep and a real bench table, and checks the
+# Runs `baize chart` the way a user does, on a real sweep and real bench tables, and checks the
 # PNG files it writes (signature, chunk checksums, size from the IHDR chunk), that the same input
 # gives the same bytes, and that bad input gets a clear error and leaves no file behind:
 #   bash tests/tools/chart_cli_test.sh path/to/baize
@@ -170,5 +170,46 @@ expect_error 1 "$work/missing/bench.png" \
 expect_error 2 "fig6.csv: no column 'solver'" chart bench-cushion "$work/sweep/fig6.csv" --png "$work/x.png"
 expect_error 2 "--png is required" chart bench-cushion "$work/bench.csv"
 [[ ! -e "$work/x.png" ]] || fail "a refused bench chart left a file"
+
+# ---- 5. The accuracy bench table (one shot, one timed run) to a log-log PNG: one series per
+# engine; the event loop's error of 0 is drawn on a floor, so the table is accepted as it is.
+"$baize" bench accuracy --shots 1 --repeats 1 --csv "$work/accuracy.csv" >/dev/null ||
+  fail "bench accuracy exited $?"
+grep -q '^event,exact,[^,]*,0,0,all$' "$work/accuracy.csv" || fail "test setup: the event row has no error 0"
+"$baize" chart bench-accuracy "$work/accuracy.csv" --png "$work/accuracy.png" --width 480 \
+  --height 320 >"$work/out" || fail "chart bench-accuracy exited $?"
+grep -qxF "wrote $work/accuracy.png" "$work/out" || fail "no 'wrote' line for the accuracy chart"
+check_png 480 320 "$work/accuracy.png"
+count_palette_colours 3 "$work/accuracy.png"  # event, fixed-step, box2d
+"$baize" chart bench-accuracy "$work/accuracy.csv" --png "$work/accuracy-again.png" --width 480 \
+  --height 320 >/dev/null || fail "second chart bench-accuracy exited $?"
+cmp -s "$work/accuracy.png" "$work/accuracy-again.png" || fail "accuracy chart differs between runs"
+# With the "shots" column the rows of each subset make their own series: 3 engines x 2 subsets.
+python3 - "$work/accuracy.csv" "$work/subsets.csv" <<'EOF_PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+with open(sys.argv[2], "w") as out:
+    out.write("engine,setting,median_us,position_error_m,outcome_mismatch,shots\n")
+    for subset, scale in (("all", 1.0), ("no-breaks", 0.5)):
+        for r in rows:
+            error = float(r["position_error_m"]) * scale
+            out.write(f'{r["engine"]},{r["setting"]},{r["median_us"]},{error},{r["outcome_mismatch"]},{subset}\n')
+EOF_PY
+"$baize" chart bench-accuracy "$work/subsets.csv" --png "$work/subsets.png" --width 480 \
+  --height 320 >/dev/null || fail "chart bench-accuracy with subsets exited $?"
+count_palette_colours 6 "$work/subsets.png"
+# Only the event loop's rows: every error is 0, and the chart still draws them (on the default floor).
+head -2 "$work/accuracy.csv" >"$work/event-only.csv"
+"$baize" chart bench-accuracy "$work/event-only.csv" --png "$work/event-only.png" >/dev/null ||
+  fail "an all-zero error table was refused"
+count_palette_colours 1 "$work/event-only.png"
+# A negative error is refused with the file, line and column; nothing is written.
+sed 's/^fixed-step,dt=1ms,\([^,]*\),[^,]*,/fixed-step,dt=1ms,\1,-0.5,/' "$work/accuracy.csv" >"$work/negative.csv"
+grep -q ',-0.5,' "$work/negative.csv" || fail "test setup: no negative error written"
+expect_error 2 "$work/negative.csv line 4, column position_error_m = -0.5 is not allowed" \
+  chart bench-accuracy "$work/negative.csv" --png "$work/negative.png"
+[[ ! -e "$work/negative.png" && ! -e "$work/negative.png.tmp" ]] || fail "a refused accuracy chart left a file"
+expect_error 2 "no column 'engine'" chart bench-accuracy "$work/bench.csv" --png "$work/x.png"
+expect_error 2 "--png is required" chart bench-accuracy "$work/accuracy.csv"
 
 echo "chart CLI: all checks passed"

@@ -311,12 +311,21 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
         aggregate(configs[c], scores[c], shots, [](const Shot& s) { return !s.frozen_rack; }));
   }
 
+  const auto racks =
+      std::count_if(shots.begin(), shots.end(), [](const Shot& s) { return s.frozen_rack; });
+  const bool both_sets = racks > 0 && racks < static_cast<long>(shots.size());
+  // The column "shots" names the subset a row scores: "all", or "no-breaks" (the same without the
+  // breaks, written when the set has breaks and other shots).
   std::ostringstream out;
-  out << "engine,setting,median_us,position_error_m,outcome_mismatch\n";
-  for (const Row& r : rows) {
-    out << r.engine << ',' << r.setting << ',' << std::setprecision(6) << r.median_us << ','
-        << r.position_error_m << ',' << r.outcome_mismatch << '\n';
-  }
+  out << "engine,setting,median_us,position_error_m,outcome_mismatch,shots\n";
+  const auto write_rows = [&](const std::vector<Row>& subset, const char* name) {
+    for (const Row& r : subset) {
+      out << r.engine << ',' << r.setting << ',' << std::setprecision(6) << r.median_us << ','
+          << r.position_error_m << ',' << r.outcome_mismatch << ',' << name << '\n';
+    }
+  };
+  write_rows(rows, "all");
+  if (both_sets) write_rows(without_breaks, "no-breaks");
   std::cout << shots.size() << " shots (";
   for (std::size_t k = 0; k < shots.size(); ++k) std::cout << (k ? ", " : "") << shots[k].name;
   std::cout << ")\n\n";
@@ -326,9 +335,7 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
                "(balls on the table in both); outcome mismatch: share of shots whose pocketed "
                "balls or first "
             << kComparedCueContacts << " cue-ball contacts differ from the event loop's.\n";
-  const auto racks =
-      std::count_if(shots.begin(), shots.end(), [](const Shot& s) { return s.frozen_rack; });
-  if (racks > 0 && racks < static_cast<long>(shots.size())) {
+  if (both_sets) {
     std::cout << "\nThe same without the " << racks
               << " breaks (frozen racks: their outcome hangs on 100 nm gaps between the racked "
                  "balls, which no fixed step resolves):\n\n";

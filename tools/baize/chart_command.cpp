@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/line_chart.h"
+#include "tools/baize/accuracy_chart.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_charts.h"
 
@@ -65,7 +66,9 @@ CLI::App* addSizeFlags(CLI::App* command, ChartFlags& flags) {
 
 void addChartCommand(CLI::App& parent) {
   CLI::App* chart = parent.add_subcommand(
-      "chart", "Draw PNG charts of the cushion sweep and bench CSV files (see docs/cushion.md)");
+      "chart",
+      "Draw PNG charts of the cushion sweep and the cushion and accuracy bench CSV files (see "
+      "docs/cushion.md)");
   chart->require_subcommand(1, 1);
 
   auto sweep_flags = std::make_shared<ChartFlags>();
@@ -99,6 +102,26 @@ void addChartCommand(CLI::App& parent) {
       withContext(flags.input, [&] {
         const std::filesystem::path png(flags.png_path);
         writeCharts({{png.filename().string(), cushionBenchChart(flags.input)}},
+                    png.parent_path().string(), flags);
+      });
+    });
+    if (status != 0) throw CLI::RuntimeError(status);
+  });
+
+  auto accuracy_flags = std::make_shared<ChartFlags>();
+  CLI::App* accuracy = chart->add_subcommand(
+      "bench-accuracy",
+      "From a `baize bench accuracy --csv` table write a log-log chart of position error against "
+      "median run time per shot, one line per engine (an error of 0 drawn on a floor)");
+  accuracy->add_option("CSV", accuracy_flags->input, "the bench table")->required();
+  accuracy->add_option("--png", accuracy_flags->png_path, "the PNG file to write")->required();
+  addSizeFlags(accuracy, *accuracy_flags);
+  accuracy->callback([accuracy_flags] {
+    const ChartFlags& flags = *accuracy_flags;
+    const int status = runReportingErrors("chart bench-accuracy", [&] {
+      withContext(flags.input, [&] {
+        const std::filesystem::path png(flags.png_path);
+        writeCharts({{png.filename().string(), benchAccuracyChart(flags.input)}},
                     png.parent_path().string(), flags);
       });
     });

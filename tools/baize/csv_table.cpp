@@ -1,5 +1,6 @@
 #include "tools/baize/csv_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -45,6 +46,10 @@ CsvTable CsvTable::read(const std::string& path) {
     table.line_numbers_.push_back(line_number);
   }
   return table;
+}
+
+bool CsvTable::hasColumn(const std::string& name) const {
+  return std::find(header_.begin(), header_.end(), name) != header_.end();
 }
 
 size_t CsvTable::column(const std::string& name) const {

@@ -17,6 +17,8 @@ class CsvTable {
   size_t rowCount() const { return rows_.size(); }
   // Throws std::invalid_argument naming the file and the columns it has when `name` is missing.
   size_t column(const std::string& name) const;
+  // Whether the header has a column `name` (for optional columns).
+  bool hasColumn(const std::string& name) const;
   const std::string& text(size_t row, size_t column) const { return rows_[row][column]; }
   // The field as a finite number; throws std::invalid_argument naming file, line and column.
   double number(size_t row, size_t column) const;

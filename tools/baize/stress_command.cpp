@@ -1,362 +1,338 @@
 #include "tools/baize/stress_command.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
-#include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
-#include "engine/shot_simulator.h"
+#include "engine/json_reader.h"
+#include "engine/scene.h"
+#include "physics/cue_strike.h"
+#include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/stress_checks.h"
+#include "tools/baize/stress_shots.h"
 
 namespace baize::tools {
 namespace {
 
 using physics::BallState;
 
-constexpr double kTableLength_m = 2.54;
-constexpr double kTableWidth_m = 1.27;
-// The strongest shot, m/s: above any cue strike (a break is about 10 m/s).
-constexpr double kMaxSpeed_mps = 16.0;
-// The most spin on each axis, in units of speed / R: beyond what a cue tip can give (about 2.5).
-constexpr double kMaxSpinFactor = 3.0;
-// Tiny shots: speeds log-uniform in this range, m/s, around the stopping thresholds' scale.
-constexpr double kTinySpeedMin_mps = 1e-6;
-constexpr double kTinySpeedMax_mps = 1e-3;
-// Overlap between balls, or a centre closer than R to a cushion line, beyond this is a failure, m:
-// contact positions come from polynomial roots, correct to rounding (~1e-14 m).
-constexpr double kOverlapTolerance_m = 1e-9;
-// Kinetic energy after an event may exceed that before by this fraction of it plus kEnergyFloor:
-// rounding in the impact models (the exact cushion solver is accurate to 1e-9 of the speed, but
-// conserves or loses energy by construction; the ball-ball model loses it exactly).
-constexpr double kEnergyRelativeTolerance = 1e-12;
-// Absolute floor for the energy check, J/kg: rounding of energies of balls near the stopping
-// thresholds (speeds of 1e-9 m/s carry 5e-19 J/kg).
-constexpr double kEnergyFloor_Jpkg = 1e-15;
-// How many failing shots are printed in full.
+// How many failing shots are printed in full (all of them are written with --failures).
 constexpr int kMaxReportedShots = 10;
-
-enum class SceneKind { Random, GapShot, FrozenLine, FrozenTriangle, CushionFrozen, Tiny, Grazing, Count };
-
-const char* sceneKindName(SceneKind kind) {
-  switch (kind) {
-    case SceneKind::Random: return "random";
-    case SceneKind::GapShot: return "gap shot";
-    case SceneKind::FrozenLine: return "frozen line";
-    case SceneKind::FrozenTriangle: return "frozen triangle";
-    case SceneKind::CushionFrozen: return "ball against a cushion";
-    case SceneKind::Tiny: return "tiny speed";
-    case SceneKind::Grazing: return "grazing";
-    case SceneKind::Count: break;
-  }
-  return "?";
-}
+// The most threads --threads takes: far above any machine this runs on, low enough to refuse a
+// typo.
+constexpr int kMaxThreads = 256;
+// A progress line goes to stderr every this many shots (long runs take many minutes).
+constexpr long kProgressShots = 50000;
+// The "format" of a state file (a failing shot that no scene can express).
+constexpr const char* kStateFormat = "baize stress state";
 
 struct StressFlags {
   long shots = 100000;
   std::uint64_t seed = 1;
   int max_balls = 6;
+  int threads = 1;
+  double max_seconds = 0;  // 0: no budget
+  long max_events = engine::SimulationParams{}.max_events;
+  std::string failures_dir;
+  std::string replay_path;
 };
 
-class SceneMaker {
- public:
-  SceneMaker(std::uint64_t seed, double radius_m) : engine_(seed), R_(radius_m) {}
-
-  double uniform(double lo, double hi) { return lo + (hi - lo) * ((engine_() >> 11) * 0x1.0p-53); }
-  double logUniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
-  int integer(int lo, int hi) { return lo + static_cast<int>(engine_() % static_cast<std::uint64_t>(hi - lo + 1)); }
-  Eigen::Vector2d direction() {
-    const double a = uniform(0, 2 * M_PI);
-    return {std::cos(a), std::sin(a)};
-  }
-
-  // Velocity `speed` along `dir` and spin up to kMaxSpinFactor * speed / R on each axis.
-  void strike(BallState* b, const Eigen::Vector2d& dir, double speed) {
-    b->velocity = {speed * dir.x(), speed * dir.y(), 0};
-    const double w = kMaxSpinFactor * speed / R_;
-    b->angular_velocity = {uniform(-w, w), uniform(-w, w), uniform(-w, w)};
-  }
-
-  bool clear(const std::vector<BallState>& balls, const Eigen::Vector2d& p) const {
-    if (std::abs(p.x()) > kTableLength_m / 2 - R_ || std::abs(p.y()) > kTableWidth_m / 2 - R_) return false;
-    for (const BallState& o : balls) {
-      if ((o.position - p).norm() < 2 * R_) return false;
-    }
-    return true;
-  }
-
-  // Adds balls at random clear places until there are `count` (gives up quietly on a full table).
-  void fill(std::vector<BallState>* balls, int count) {
-    for (int attempt = 0; attempt < 1000 && static_cast<int>(balls->size()) < count; ++attempt) {
-      const Eigen::Vector2d p(uniform(-kTableLength_m / 2 + R_, kTableLength_m / 2 - R_),
-                              uniform(-kTableWidth_m / 2 + R_, kTableWidth_m / 2 - R_));
-      if (clear(*balls, p)) {
-        BallState b;
-        b.position = p;
-        balls->push_back(b);
-      }
-    }
-  }
-
-  // A cue ball `distance` back from `target` along -dir, aimed along dir; added if clear.
-  bool addCue(std::vector<BallState>* balls, const Eigen::Vector2d& target, const Eigen::Vector2d& dir,
-              double distance, double speed) {
-    BallState cue;
-    cue.position = target - distance * dir;
-    if (!clear(*balls, cue.position)) return false;
-    strike(&cue, dir, speed);
-    balls->push_back(cue);
-    return true;
-  }
-
-  std::vector<BallState> make(SceneKind kind, int max_balls) {
-    std::vector<BallState> balls;
-    const double speed = uniform(0, kMaxSpeed_mps);
-    const Eigen::Vector2d centre(uniform(-0.8, 0.8), uniform(-0.3, 0.3));
-    const Eigen::Vector2d dir = direction(), side(-dir.y(), dir.x());
-    switch (kind) {
-      case SceneKind::Random:
-      case SceneKind::Count: {
-        fill(&balls, integer(1, max_balls));
-        strike(&balls[0], direction(), speed);
-        break;
-      }
-      case SceneKind::GapShot: {  // at the gap between two touching balls: two contacts at once
-        BallState a, b;
-        a.position = centre + R_ * side;
-        b.position = centre - R_ * side;
-        balls = {a, b};
-        addCue(&balls, centre, dir, uniform(0.1, 0.3), speed);
-        break;
-      }
-      case SceneKind::FrozenLine: {  // a row of touching balls, the cue along or across it
-        const int row = std::max(2, std::min(max_balls - 1, 4));
-        for (int i = 0; i < row; ++i) {
-          BallState b;
-          b.position = centre + (2 * R_ * i) * dir;
-          balls.push_back(b);
-        }
-        const Eigen::Vector2d aim = integer(0, 1) ? dir : Eigen::Vector2d((dir + uniform(-0.3, 0.3) * side).normalized());
-        addCue(&balls, centre, aim, uniform(0.1, 0.3), speed);
-        break;
-      }
-      case SceneKind::FrozenTriangle: {  // three mutually touching balls
-        BallState a, b, c;
-        a.position = centre;
-        b.position = centre + 2 * R_ * dir;
-        c.position = centre + 2 * R_ * (0.5 * dir + std::sqrt(0.75) * side);
-        balls = {a, b, c};
-        const Eigen::Vector2d aim = (dir + uniform(-0.2, 0.2) * side).normalized();
-        addCue(&balls, centre, aim, uniform(0.1, 0.3), speed);
-        fill(&balls, std::min(max_balls, static_cast<int>(balls.size()) + integer(0, 1)));
-        break;
-      }
-      case SceneKind::CushionFrozen: {  // a ball touching cushion 0 (y = -W/2), hit or moving itself
-        BallState a;
-        a.position = {uniform(-1.0, 1.0), -kTableWidth_m / 2 + R_};
-        balls = {a};
-        if (integer(0, 1)) {
-          strike(&balls[0], direction(), speed);
-        } else {
-          const Eigen::Vector2d aim = Eigen::Vector2d(uniform(-1, 1), -1).normalized();
-          addCue(&balls, a.position, aim, uniform(0.1, 0.4), speed);
-        }
-        fill(&balls, std::min(max_balls, static_cast<int>(balls.size()) + integer(0, 2)));
-        break;
-      }
-      case SceneKind::Tiny: {  // speeds near the stopping thresholds, often at a touching ball
-        BallState a, b;
-        a.position = centre;
-        b.position = centre + 2 * R_ * dir;
-        balls = {a, b};
-        strike(&balls[0], integer(0, 1) ? dir : direction(), logUniform(kTinySpeedMin_mps, kTinySpeedMax_mps));
-        fill(&balls, std::min(max_balls, 2 + integer(0, 1)));
-        break;
-      }
-      case SceneKind::Grazing: {  // a straight pass at 2R + a tiny offset of either sign
-        BallState a;
-        a.position = centre;
-        const double offset = (integer(0, 1) ? 1 : -1) * logUniform(1e-16, 1e-6) * (integer(0, 4) ? 1 : 0);
-        balls = {a};
-        BallState cue;
-        cue.position = centre - uniform(0.1, 0.5) * dir - (2 * R_ + offset) * side;
-        cue.velocity = {speed * dir.x(), speed * dir.y(), 0};
-        const double follow = uniform(0, kMaxSpinFactor) * speed / R_;  // about the axis across the path
-        cue.angular_velocity = {follow * side.x(), follow * side.y(), uniform(-kMaxSpinFactor, kMaxSpinFactor) * speed / R_};
-        if (clear(balls, cue.position)) balls.push_back(cue);
-        fill(&balls, std::min(max_balls, 2 + integer(0, 1)));
-        break;
-      }
-    }
-    return balls;
-  }
-
- private:
-  std::mt19937_64 engine_;
-  double R_;
+struct FailedShot {
+  long shot = 0;
+  StressShot made;
+  ShotCheck check;
 };
 
-nlohmann::json sceneJson(const std::vector<BallState>& balls) {
+// What a run of shots adds up to; sums and maxima, so the same whatever the threads did when.
+struct Tally {
+  long shots = 0;
+  long events = 0;
+  long pocketed = 0;
+  double worst_energy_growth = 0;
+  std::map<std::string, long> failures_by_kind;  // kind -> shots failing that way
+  std::map<std::string, long> shots_by_kind;     // shot kind -> shots
+  std::vector<FailedShot> failed;
+  std::string error;  // what a thread's shot threw outside the checks, if anything
+
+  void add(const Tally& other) {
+    shots += other.shots;
+    events += other.events;
+    pocketed += other.pocketed;
+    worst_energy_growth = std::max(worst_energy_growth, other.worst_energy_growth);
+    for (const auto& [kind, count] : other.failures_by_kind) failures_by_kind[kind] += count;
+    for (const auto& [kind, count] : other.shots_by_kind) shots_by_kind[kind] += count;
+    failed.insert(failed.end(), other.failed.begin(), other.failed.end());
+  }
+};
+
+nlohmann::json ballsJson(const std::vector<BallState>& balls) {
   nlohmann::json list = nlohmann::json::array();
   for (const BallState& b : balls) {
     list.push_back({{"position", {b.position.x(), b.position.y()}},
                     {"velocity", {b.velocity.x(), b.velocity.y(), b.velocity.z()}},
-                    {"angular_velocity", {b.angular_velocity.x(), b.angular_velocity.y(), b.angular_velocity.z()}}});
+                    {"angular_velocity",
+                     {b.angular_velocity.x(), b.angular_velocity.y(), b.angular_velocity.z()}}});
   }
   return list;
 }
 
-bool finite(const BallState& b) {
-  return b.position.allFinite() && b.velocity.allFinite() && b.angular_velocity.allFinite();
+// The file that makes a failing shot again: a scene for a cue shot (`baize simulate` runs it,
+// `baize stress --replay` checks it), else the balls' states (`baize stress --replay`). Numbers
+// are written with enough digits to read back bit for bit.
+nlohmann::json reproductionJson(const FailedShot& f, const StressFlags& flags) {
+  if (f.made.scene) return sceneFileJson(f.made, flags.max_events);
+  return {{"format", kStateFormat},
+          {"seed", flags.seed},
+          {"shot", f.shot},
+          {"kind", stressShotKindName(f.made.kind)},
+          {"table", makeStressTable(f.made.table).name},
+          {"max_events", flags.max_events},
+          {"first_failure", f.check.first_message},
+          {"balls", ballsJson(f.made.balls)}};
 }
 
-struct ShotCheck {
-  std::map<std::string, long> failures;  // kind -> events failing that way within the shot
-  std::string first_message;
-  void fail(const std::string& kind, const std::string& message) {
-    if (failures.empty()) first_message = kind + ": " + message;
-    ++failures[kind];
-  }
-};
-
-// Checks the balls at one instant: no overlap, none beyond a cushion, all finite.
-void checkPositions(const engine::SimulationParams& p, const engine::TableGeometry& table,
-                    const std::vector<BallState>& balls, double time_s, ShotCheck* check) {
-  const double R = p.cushion.radius_m;
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    if (!finite(balls[i])) check->fail("non-finite", "ball " + std::to_string(i) + " at t = " + std::to_string(time_s));
-    for (std::size_t j = 0; j < i; ++j) {
-      const double gap = (balls[i].position - balls[j].position).norm() - 2 * R;
-      if (gap < -kOverlapTolerance_m) {
-        std::ostringstream m;
-        m.precision(17);
-        m << "balls " << j << " and " << i << " overlap by " << -gap << " m at t = " << time_s << " s";
-        check->fail("overlap", m.str());
-      }
-    }
-    for (std::size_t k = 0; k < table.cushions.size(); ++k) {
-      const engine::CushionSegment& c = table.cushions[k];
-      const Eigen::Vector2d along = c.end_m - c.start_m;
-      const double s = (balls[i].position - c.start_m).dot(along) / along.squaredNorm();
-      const double distance = c.inward_normal.dot(balls[i].position - c.start_m);
-      if (s >= 0 && s <= 1 && distance < R - kOverlapTolerance_m) {
-        std::ostringstream m;
-        m.precision(17);
-        m << "ball " << i << " is " << R - distance << " m beyond cushion " << k << " at t = " << time_s << " s";
-        check->fail("escape", m.str());
-      }
-    }
-  }
+std::string reproductionFileName(const FailedShot& f, const StressFlags& flags) {
+  return "seed" + std::to_string(flags.seed) + "-shot" + std::to_string(f.shot) +
+         (f.made.scene ? ".scene.json" : ".state.json");
 }
 
-struct ShotOutcome {
-  ShotCheck check;
-  long events = 0;
-  double worst_energy_growth = 0;  // largest relative growth across an event
+// A replay: the shot a reproduction file holds, on its table with its physics.
+struct Replay {
+  StressTable table;
+  engine::SimulationParams params;
+  std::vector<BallState> balls;
 };
 
-ShotOutcome runShot(const engine::SimulationParams& p, const engine::TableGeometry& table,
-                    const std::vector<BallState>& input) {
-  ShotOutcome out;
-  ShotCheck& check = out.check;
-  engine::SimulationResult result;
+Replay loadReplay(const std::string& path) {
+  const nlohmann::json document = engine::JsonReader::parseFile(path);
+  Replay replay;
+  if (document.is_object() && document.contains("shot") && !document.contains("format")) {
+    const engine::Scene scene = engine::loadScene(path);
+    replay.table = stressTableOfScene(scene);
+    replay.params = replay.table.params;
+    const physics::CueStrikeResult strike =
+        physics::strikeCueBall(engine::cueStrikeParamsFor(scene), scene.shot);
+    for (const engine::PlacedBall& b : scene.balls) {
+      BallState state;
+      state.position = b.position_m;
+      if (b.id == scene.cue_ball) {
+        state.velocity = strike.ball.v;
+        state.angular_velocity = strike.ball.w;
+      }
+      replay.balls.push_back(state);
+    }
+    return replay;
+  }
+  const engine::JsonReader state(document, path);
+  state.requireKeys({"format", "table", "max_events", "balls"},
+                    {"seed", "shot", "kind", "first_failure"});
+  if (state.text("format") != kStateFormat) {
+    state.reject("format", std::string("\"") + kStateFormat + "\" (or a scene file)");
+  }
   try {
-    result = engine::simulate(p, table, input);
-  } catch (const std::runtime_error& e) {
-    check.fail("hang", e.what());
-    return out;
+    replay.table = makeStressTable(stressTableIdByName(state.text("table")));
   } catch (const std::invalid_argument& e) {
-    check.fail("rejected", e.what());
-    return out;
+    state.reject("table", e.what());
   }
-  out.events = static_cast<long>(result.events.size());
-  const int n = static_cast<int>(input.size());
-  std::vector<BallState> known = input;  // each ball's last known state and its time
-  std::vector<double> known_time(n, 0);
-  std::vector<bool> pocketed(n, false);
-  for (const engine::Event& e : result.events) {
-    if (!std::isfinite(e.time_s)) check.fail("non-finite", "an event time");
-    std::vector<BallState> now(n);
-    for (int i = 0; i < n; ++i) now[i] = physics::advance(p.cloth, known[i], std::max(0.0, e.time_s - known_time[i]));
-    double before = 0, after = 0;
-    for (const BallState& b : e.before) before += physics::specificKineticEnergy(p.cloth, b);
-    for (const BallState& b : e.after) {
-      if (!finite(b)) check.fail("non-finite", std::string("state after a ") + engine::eventKindName(e.kind));
-      after += physics::specificKineticEnergy(p.cloth, b);
+  replay.params = replay.table.params;
+  replay.params.max_events = state.integer("max_events", 1, 2147483647);
+  for (const nlohmann::json& b : document.at("balls")) {
+    BallState s;
+    try {
+      s.position = {b.at("position").at(0).get<double>(), b.at("position").at(1).get<double>()};
+      for (int k = 0; k < 3; ++k) {
+        s.velocity[k] = b.at("velocity").at(k).get<double>();
+        s.angular_velocity[k] = b.at("angular_velocity").at(k).get<double>();
+      }
+    } catch (const nlohmann::json::exception&) {
+      state.reject("balls",
+                   "a list of {position: [x, y], velocity: [x, y, z], angular_velocity: "
+                   "[x, y, z]} in m, m/s and rad/s");
     }
-    if (before > 0) out.worst_energy_growth = std::max(out.worst_energy_growth, (after - before) / before);
-    if (!(after <= before * (1 + kEnergyRelativeTolerance) + kEnergyFloor_Jpkg)) {
-      std::ostringstream m;
-      m.precision(17);
-      m << engine::eventKindName(e.kind) << " at t = " << e.time_s << " s: " << before << " -> " << after << " J/kg";
-      check.fail("energy", m.str());
-    }
-    now[e.ball] = e.after[0];
-    if (e.kind == engine::EventKind::BallBall) now[e.other] = e.after[1];
-    if (e.kind == engine::EventKind::Pocket) pocketed[e.ball] = true;
-    std::vector<BallState> on_table;
-    for (int i = 0; i < n; ++i) {
-      known[i] = now[i];
-      known_time[i] = e.time_s;
-      if (!pocketed[i]) on_table.push_back(now[i]);
-    }
-    checkPositions(p, table, on_table, e.time_s, &check);
+    replay.balls.push_back(s);
   }
-  std::vector<BallState> final_on_table;
-  for (const engine::BallRecord& b : result.final_balls) {
-    if (!b.pocketed) final_on_table.push_back(b.state);
+  return replay;
+}
+
+// Shots [0, flags.shots) on flags.threads threads. Each thread takes the next shot number from a
+// shared counter and finishes every shot it takes, so when the time budget stops the run the shots
+// done are exactly a first run of numbers, and each shot's result depends on (seed, shot) alone:
+// the summary is the same for any thread count.
+Tally runShots(const StressFlags& flags, const StressTables& tables, bool* stopped_by_budget) {
+  std::atomic<long> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex progress_mutex;
+  const auto started = std::chrono::steady_clock::now();
+  std::vector<Tally> tallies(flags.threads);
+  auto work = [&](Tally* tally) {
+    for (;;) {
+      if (flags.max_seconds > 0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+              flags.max_seconds) {
+        stop = true;
+      }
+      if (stop) return;
+      const long shot = next.fetch_add(1);
+      if (shot >= flags.shots) return;
+      if (shot > 0 && shot % kProgressShots == 0) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        std::cerr
+            << "stress: shot " << shot << " of " << flags.shots << " begun after "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
+            << " s\n";
+      }
+      StressShot made;
+      ShotOutcome outcome;
+      try {
+        made = makeStressShot(tables, flags.seed, shot, flags.max_balls);
+        engine::SimulationParams params = tables.of(made.table).params;
+        params.max_events = flags.max_events;
+        outcome = checkShot(tables.of(made.table), params, made.balls);
+      } catch (const std::exception& e) {
+        // Not a failure of the event loop (checkShot records those) but of this program: stop the
+        // run and say which shot, rather than let the thread end the process.
+        tally->error = "shot " + std::to_string(shot) + ": " + e.what();
+        stop = true;
+        return;
+      }
+      ++tally->shots;
+      ++tally->shots_by_kind[stressShotKindName(made.kind)];
+      tally->events += outcome.events;
+      tally->pocketed += outcome.pocketed;
+      tally->worst_energy_growth =
+          std::max(tally->worst_energy_growth, outcome.worst_energy_growth);
+      if (!outcome.check.failed()) continue;
+      for (const auto& entry : outcome.check.failures) ++tally->failures_by_kind[entry.first];
+      tally->failed.push_back({shot, std::move(made), outcome.check});
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 1; t < flags.threads; ++t) threads.emplace_back(work, &tallies[t]);
+  work(&tallies[0]);
+  for (std::thread& thread : threads) thread.join();
+  for (const Tally& t : tallies) {
+    if (!t.error.empty()) throw std::logic_error("stress: making or checking " + t.error);
   }
-  checkPositions(p, table, final_on_table, result.end_time_s, &check);
-  return out;
+  Tally total;
+  for (const Tally& t : tallies) total.add(t);
+  std::sort(total.failed.begin(), total.failed.end(),
+            [](const FailedShot& a, const FailedShot& b) { return a.shot < b.shot; });
+  *stopped_by_budget = stop && total.shots < flags.shots;
+  return total;
+}
+
+void runReplay(const StressFlags& flags) {
+  Replay replay;
+  try {
+    replay = loadReplay(flags.replay_path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--replay: ") + e.what());
+  }
+  const ShotOutcome outcome = checkShot(replay.table, replay.params, replay.balls);
+  std::cout << "replay: " << flags.replay_path << ", table " << replay.table.name << ", balls "
+            << replay.balls.size() << ", events " << outcome.events << ", ";
+  if (!outcome.check.failed()) {
+    std::cout << "passed every check\n";
+    return;
+  }
+  std::cout << "FAILED " << outcome.check.first_message << '\n';
+  throw std::runtime_error("the replayed shot failed its checks");
 }
 
 void runStress(const StressFlags& flags) {
+  if (!flags.replay_path.empty()) return runReplay(flags);
   if (flags.shots < 1) rejectFlag("--shots", static_cast<double>(flags.shots), "it must be >= 1");
   if (flags.max_balls < 2 || flags.max_balls > 16) {
     rejectFlag("--balls", flags.max_balls, "it must lie in [2, 16] (the most balls per shot)");
   }
-  const engine::SimulationParams params = engine::poolSimulationParams();
-  const engine::TableGeometry table = engine::rectangularTable(kTableLength_m, kTableWidth_m);
-  const double R = params.cushion.radius_m;
-
-  std::map<std::string, long> failures_by_kind;  // kind -> shots failing that way
-  long events = 0, failed_shots = 0;
-  double worst_energy_growth = 0;
+  if (flags.threads < 1 || flags.threads > kMaxThreads) {
+    rejectFlag("--threads", flags.threads,
+               "it must lie in [1, " + std::to_string(kMaxThreads) + "]");
+  }
+  if (!(flags.max_seconds >= 0) || !std::isfinite(flags.max_seconds)) {
+    rejectFlag("--max-seconds", flags.max_seconds, "it must be >= 0 (0: no budget)");
+  }
+  if (flags.max_events < 1) {
+    rejectFlag("--max-events", static_cast<double>(flags.max_events), "it must be >= 1");
+  }
+  if (!flags.failures_dir.empty() && !std::filesystem::is_directory(flags.failures_dir)) {
+    throw UsageError("--failures " + flags.failures_dir +
+                     " is not allowed: it must be an existing directory");
+  }
+  const StressTables tables = makeStressTables();
   const auto started = std::chrono::steady_clock::now();
-  for (long shot = 0; shot < flags.shots; ++shot) {
-    // Each shot has its own generator, so a shot can be made again from (seed, shot) alone.
-    SceneMaker maker(flags.seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(shot), R);
-    const SceneKind kind = static_cast<SceneKind>(shot % static_cast<long>(SceneKind::Count));
-    const std::vector<BallState> balls = maker.make(kind, flags.max_balls);
-    const ShotOutcome outcome = runShot(params, table, balls);
-    events += outcome.events;
-    worst_energy_growth = std::max(worst_energy_growth, outcome.worst_energy_growth);
-    if (outcome.check.failures.empty()) continue;
-    ++failed_shots;
-    for (const auto& entry : outcome.check.failures) ++failures_by_kind[entry.first];  // shots, not events
-    if (failed_shots <= kMaxReportedShots) {
-      nlohmann::json repro = {{"seed", flags.seed}, {"shot", shot}, {"scene", sceneKindName(kind)},
-                              {"first_failure", outcome.check.first_message},
-                              {"table_m", {kTableLength_m, kTableWidth_m}}, {"balls", sceneJson(balls)}};
-      std::cout << "FAILED SHOT " << repro.dump() << '\n';
+  bool stopped_by_budget = false;
+  const Tally tally = runShots(flags, tables, &stopped_by_budget);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  long reported = 0, not_reproduced = 0;
+  for (const FailedShot& f : tally.failed) {
+    const nlohmann::json repro = reproductionJson(f, flags);
+    std::string written;
+    if (!flags.failures_dir.empty()) {
+      written =
+          (std::filesystem::path(flags.failures_dir) / reproductionFileName(f, flags)).string();
+      AtomicFile file(written, "--failures");
+      file.stream() << repro.dump(2) << '\n';
+      file.commit();
+      // The file must make the same failure again, read back as --replay reads it.
+      const Replay replay = loadReplay(written);
+      const ShotOutcome again = checkShot(replay.table, replay.params, replay.balls);
+      if (again.check.first_message != f.check.first_message) ++not_reproduced;
+    }
+    if (++reported > kMaxReportedShots) continue;
+    std::cout << "FAILED SHOT " << f.shot << " (" << stressShotKindName(f.made.kind) << ", "
+              << tables.of(f.made.table).name << "): " << f.check.first_message << '\n';
+    if (written.empty()) {
+      std::cout << "  " << repro.dump() << '\n';
+    } else if (f.made.scene) {
+      std::cout << "  written to " << written << " (baize simulate runs it, baize stress --replay "
+                << "checks it)\n";
+    } else {
+      std::cout << "  written to " << written << " (baize stress --replay checks it)\n";
     }
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::cout << "stress: shots " << flags.shots << ", events " << events << ", failed shots " << failed_shots
-            << ", failed shots by kind";
-  if (failures_by_kind.empty()) std::cout << " none";
-  for (const auto& [what, count] : failures_by_kind) std::cout << ' ' << what << '=' << count;
+  if (!flags.failures_dir.empty() && !tally.failed.empty()) {
+    std::cout << "reproductions: " << tally.failed.size() << " written to " << flags.failures_dir
+              << ", " << tally.failed.size() - not_reproduced << " fail the same way on replay\n";
+  }
+  if (stopped_by_budget) {
+    std::cout << "stopped by --max-seconds " << flags.max_seconds << " after shots 0 to "
+              << tally.shots - 1 << " of " << flags.shots << '\n';
+  }
+  std::cout << "shots by kind:";
+  for (const auto& [kind, count] : tally.shots_by_kind) std::cout << ' ' << kind << '=' << count;
+  std::cout << "\nballs pocketed " << tally.pocketed << '\n';
+  std::cout << "stress: shots " << tally.shots << ", events " << tally.events << ", failed shots "
+            << tally.failed.size() << ", failed shots by kind";
+  if (tally.failures_by_kind.empty()) std::cout << " none";
+  for (const auto& [what, count] : tally.failures_by_kind) std::cout << ' ' << what << '=' << count;
   std::cout.precision(3);
-  std::cout << ", largest energy growth " << worst_energy_growth << " (relative), " << seconds << " s, "
-            << flags.shots / seconds << " shots/s\n";
-  if (failed_shots > 0) throw std::runtime_error(std::to_string(failed_shots) + " shots failed their checks");
+  std::cout << ", largest energy growth " << tally.worst_energy_growth << " (relative), " << seconds
+            << " s, " << tally.shots / seconds << " shots/s\n";
+  if (not_reproduced > 0) {
+    throw std::runtime_error(std::to_string(not_reproduced) +
+                             " reproduction files do not make their failure again");
+  }
+  if (!tally.failed.empty()) {
+    throw std::runtime_error(std::to_string(tally.failed.size()) + " shots failed their checks");
+  }
 }
 
 }  // namespace
@@ -365,12 +341,29 @@ void addStressCommand(CLI::App& parent) {
   auto flags = std::make_shared<StressFlags>();
   CLI::App* command = parent.add_subcommand(
       "stress",
-      "Run many seeded random shots through the event loop and check every event (finite values, no "
-      "overlap, no ball beyond a cushion, energy never growing, every shot coming to rest)");
+      "Run many seeded shots through the event loop and check every event (finite values, no "
+      "overlap, no ball off the table, energy never growing, every shot coming to rest)");
   command->add_option("--shots", flags->shots, "number of shots")->capture_default_str();
-  command->add_option("--seed", flags->seed, "random seed (shot k uses a generator seeded from it and k)")
+  command
+      ->add_option("--seed", flags->seed,
+                   "random seed (shot k uses a generator seeded from it and k)")
       ->capture_default_str();
-  command->add_option("--balls", flags->max_balls, "most balls in a shot")->capture_default_str();
+  command->add_option("--balls", flags->max_balls, "most balls in a shot (racks excepted)")
+      ->capture_default_str();
+  command->add_option("--threads", flags->threads, "threads (the results do not depend on it)")
+      ->capture_default_str();
+  command
+      ->add_option("--max-seconds", flags->max_seconds,
+                   "stop taking new shots after this many seconds (0: run all)")
+      ->capture_default_str();
+  command
+      ->add_option("--max-events", flags->max_events, "a shot needing more events counts as a hang")
+      ->capture_default_str();
+  command->add_option("--failures", flags->failures_dir,
+                      "write a reproduction of every failing shot into this directory");
+  command->add_option(
+      "--replay", flags->replay_path,
+      "check the one shot of a reproduction file (a scene or a state file) instead");
   command->callback([flags] {
     if (const int status = runReportingErrors("stress", [&] { runStress(*flags); })) {
       throw CLI::RuntimeError(status);

@@ -1,7 +1,9 @@
-// `baize stress`: many seeded random shots through the event loop, each checked at every event for
-// finite values, overlapping balls, balls beyond a cushion, kinetic energy growing and shots that
-// never come to rest. Prints a summary and a copy-pasteable JSON reproduction of each failing shot;
-// exits 1 on any failure.
+// `baize stress`: many seeded shots through the event loop (state shots on a pocketless table and
+// the 9 ft pool table, cue shots and balls in pocket mouths on the 9 ft pool and 12 ft snooker
+// tables: tools/baize/stress_shots.h), each checked at every event (tools/baize/stress_checks.h).
+// Runs on any number of threads with the same results, within an optional time budget; prints a
+// summary and writes a reproduction of each failing shot (a scene file, or a state file that
+// `baize stress --replay` checks); exits 1 on any failure.
 #pragma once
 
 namespace CLI {
