@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
+#include <variant>
 
 #include "render/overlay_items.h"
 #include "render/table_picture.h"
@@ -39,10 +41,10 @@ Picture buildPositionMap(const engine::Table& table, const std::vector<MapPoint>
   addTable(table, picture);
   for (const MapPoint& p : points) {
     if (!p.spread) continue;
-    const Rgba colour = scaleColour(p.colour_fraction);
-    picture.items.push_back(ellipseOutline(p.spread->mean_m, p.spread->sd_major_m,
-                                           p.spread->sd_minor_m, p.spread->major_axis_rad,
-                                           kSpreadWidth_px * pixel_size_m, colour));
+    Stroke ellipse = ellipseOutline(p.spread->mean_m, p.spread->sd_major_m, p.spread->sd_minor_m,
+                                    p.spread->major_axis_rad, kSpreadWidth_px * pixel_size_m,
+                                    scaleColour(p.colour_fraction));
+    picture.items.emplace_back(std::in_place_type<Stroke>, std::move(ellipse));
   }
   for (const MapPoint& p : points) {
     addMarker(picture, shapeOf(p.outcome), p.position_m,
@@ -51,7 +53,8 @@ Picture buildPositionMap(const engine::Table& table, const std::vector<MapPoint>
   }
   if (!axes.empty()) {
     picture.legend.push_back({true, scaleColour(0), false, "colour: " + rangeText(axes[0])});
-    picture.legend.push_back({true, scaleColour(1), false, "(dark blue, purple, pink, orange, yellow)"});
+    picture.legend.push_back(
+        {true, scaleColour(1), false, "(dark blue, purple, pink, orange, yellow)"});
   }
   if (axes.size() > 1) {
     picture.legend.push_back(
