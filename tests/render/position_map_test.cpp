@@ -18,6 +18,11 @@ constexpr int kHeight_px = 500;
 // Ellipse outlines are 2 px wide and antialiased: a pixel on one is a blend of the line and the
 // cloth, so it is compared looser than a marker's fill (0-255 per channel).
 constexpr int kOutlineTolerance = 60;
+// A pixel this far (0-255, largest channel) from a marker's colour is not that marker: the cloth
+// and the dark edge are further than this from every scale colour used here.
+constexpr int kNotThisColour = 40;
+// The cloth is further than this from the ellipse's yellow in some channel (0-255).
+constexpr int kNotTheEllipse = 100;
 
 struct Drawn {
   Picture picture;
@@ -71,7 +76,7 @@ TEST(PositionMap, RowsAreNotFlipped) {
   EXPECT_GT(d.pixelAt(kPotted.position_m).x(), kWidth_px / 2);
   // And the pixel there really is the marker, not its mirror image's.
   const Eigen::Vector2d mirrored(kPotted.position_m.x(), -kPotted.position_m.y());
-  EXPECT_GT(colourDistance(d.at(mirrored), scaleColour(kPotted.colour_fraction)), 40);
+  EXPECT_GT(colourDistance(d.at(mirrored), scaleColour(kPotted.colour_fraction)), kNotThisColour);
 }
 
 TEST(PositionMap, OutcomesHaveTheirShapes) {
@@ -82,14 +87,14 @@ TEST(PositionMap, OutcomesHaveTheirShapes) {
   const Eigen::Vector2d corner(0.4 * size_m, 0.4 * size_m);
   EXPECT_LE(colourDistance(d.at(kScratch.position_m + corner), scaleColour(1.0)),
             kChannelTolerance);
-  EXPECT_GT(colourDistance(d.at(kPotted.position_m + corner), scaleColour(0.0)), 40);
-  EXPECT_GT(colourDistance(d.at(kMissed.position_m + corner), scaleColour(0.5)), 40);
+  EXPECT_GT(colourDistance(d.at(kPotted.position_m + corner), scaleColour(0.0)), kNotThisColour);
+  EXPECT_GT(colourDistance(d.at(kMissed.position_m + corner), scaleColour(0.5)), kNotThisColour);
   // The triangle points up: below the centre it is wide (its base), above it narrow.
   const Eigen::Vector2d low_side(0.25 * size_m, -0.15 * size_m);
   const Eigen::Vector2d high_side(0.25 * size_m, 0.3 * size_m);
   EXPECT_LE(colourDistance(d.at(kMissed.position_m + low_side), scaleColour(0.5)),
             kChannelTolerance);
-  EXPECT_GT(colourDistance(d.at(kMissed.position_m + high_side), scaleColour(0.5)), 40);
+  EXPECT_GT(colourDistance(d.at(kMissed.position_m + high_side), scaleColour(0.5)), kNotThisColour);
 }
 
 TEST(PositionMap, SpreadIsTheOneSigmaEllipseAroundTheMean) {
@@ -105,8 +110,10 @@ TEST(PositionMap, SpreadIsTheOneSigmaEllipseAroundTheMean) {
   EXPECT_LE(colourDistance(d.at(e.mean_m + Eigen::Vector2d(-0.2, 0)), line), kOutlineTolerance);
   EXPECT_LE(colourDistance(d.at(e.mean_m + Eigen::Vector2d(0, 0.05)), line), kOutlineTolerance);
   // Inside and outside it, the cloth.
-  EXPECT_GT(colourDistance(d.at(e.mean_m + Eigen::Vector2d(-0.1, 0)), scaleColour(1.0)), 100);
-  EXPECT_GT(colourDistance(d.at(e.mean_m + Eigen::Vector2d(0, 0.1)), scaleColour(1.0)), 100);
+  EXPECT_GT(colourDistance(d.at(e.mean_m + Eigen::Vector2d(-0.1, 0)), scaleColour(1.0)),
+            kNotTheEllipse);
+  EXPECT_GT(colourDistance(d.at(e.mean_m + Eigen::Vector2d(0, 0.1)), scaleColour(1.0)),
+            kNotTheEllipse);
 }
 
 TEST(OverlayItems, EllipsePointsLieOnTheEllipse) {
