@@ -55,8 +55,13 @@ constexpr int kRaced = 16;          // candidates that enter the noisy race
 constexpr double kThrowTolerance_rad = 1.7e-4;
 constexpr double kThrowProbe_rad = 1.7e-3;  // first secant step: 0.1 deg
 constexpr int kMaxThrowIterations = 5;      // simulations per candidate for the aim at most
-// The smallest budget: the coarse grid with its aim corrections needs about this many shots.
-constexpr long kMinPlanBudget = 1000;
+// The smallest budget: the noise-free stages stop at half the budget, and the coarse grid alone
+// (kCoarseSpeeds x kCoarseHeights x kCoarseSides candidates at up to kMaxThrowIterations shots
+// each: 1080) must fit in that half, or it would be cut off at the slow speeds it tries first.
+constexpr long kMinPlanBudget = 2500;
+static_assert(kMinPlanBudget / 2 >=
+                  kCoarseSpeeds * kCoarseHeights * kCoarseSides * kMaxThrowIterations,
+              "the coarse grid must fit in the noise-free half of the smallest budget");
 
 struct PlannedShot {
   physics::CueShot shot;

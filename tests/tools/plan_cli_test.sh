@@ -71,7 +71,7 @@ JSON
 
 # A plan with its picture. The stop region: 5 cm around the ghost-ball position.
 "$baize" plan "$work/straight.json" --ball 1 --pocket top-right \
-  --region circle:0.5225,-0.1125,0.05 --budget 1000 --noise-samples 100 --png "$work/plan.png" \
+  --region circle:0.5225,-0.1125,0.05 --budget 2500 --noise-samples 100 --png "$work/plan.png" \
   >"$work/plan.txt" || fail "plan exited $?"
 grep -q "^planner: .* shots simulated" "$work/plan.txt" || fail "no planner line: $(cat "$work/plan.txt")"
 grep -q "^  1\. speed .* tip height -" "$work/plan.txt" || fail "the best shot is no stun: $(cat "$work/plan.txt")"
