@@ -126,8 +126,9 @@ cat >"$work/suite.json" <<'JSON'
    "expect": {"pocketed": ["1"]}},
   {"name": "stops/too far", "scene": "straight.json", "shot": {"aim_at": "1", "speed_mps": 1.5},
    "expect": {"pocketed": ["1"], "cue_ball_stops_in": {"circle": [-1.0, 0.4, 0.05]}}},
-  {"name": "leave", "scene": "straight.json", "shot": {"aim_at": "1", "speed_mps": 1.5},
-   "expect": {"cue_ball_stops_in": {"straight_shot_at": "1", "into_pocket": "top-left"}}}
+  {"name": "leave", "scene": "straight.json", "shot": {"aim_at": "1", "speed_mps": 0.2},
+   "expect": {"cue_ball_stops_in": {"straight_shot_at": "1", "into_pocket": "top-right"},
+              "pocketed": ["1"]}}
 ]}
 JSON
 set +e
@@ -141,4 +142,9 @@ printf 'leave.png\nstops_too_far.png\n' | cmp -s - "$work/pictures.txt" ||
 [ "$(png_size "$work/failed/stops_too_far.png")" = 1600x800 ] || fail "case picture size"
 [ "$(count_colour "$work/failed/stops_too_far.png" $magenta)" -gt 100 ] ||
   fail "the failing case's picture shows no region"
+# A soft roll that leaves ball 1 on the table fails "pocketed" but keeps the straight shot: its
+# picture shows the ghost-ball ring and the two paths.
+grep -q "^FAIL leave | cue_ball_stops_in ok" "$work/check.txt" || fail "leave: $(cat "$work/check.txt")"
+[ "$(count_colour "$work/failed/leave.png" $magenta)" -gt 100 ] ||
+  fail "the straight shot's ghost ball and paths are not drawn"
 echo "ok"
