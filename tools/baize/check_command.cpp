@@ -1,6 +1,7 @@
 #include "tools/baize/check_command.h"
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -10,8 +11,10 @@
 #include <sstream>
 
 #include "engine/shot_suite.h"
+#include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/overlay_pictures.h"
 
 namespace baize::tools {
 namespace {
@@ -23,6 +26,7 @@ constexpr int kMaxNoiseSamples = 10000000;
 struct CheckFlags {
   std::string suite;
   std::string junit_path;
+  std::string png_dir;    // pictures of the failing cases, when set
   int noise_samples = 0;  // 0: no noise run
   std::uint64_t seed = 1;
   engine::ExecutionNoise noise;  // sigmas; the flags below set them in friendlier units
@@ -46,6 +50,35 @@ std::string probabilityText(const engine::ProbabilityEstimate& p) {
   out << std::fixed << std::setprecision(3) << p.probability << " [" << p.low << ", " << p.high
       << "] (" << p.successes << "/" << p.samples << ")";
   return out.str();
+}
+
+// A case name as a file name: characters other than letters, digits, '-', '_' and '.' become '_'
+// (names are free text; a '/' must not make a folder).
+std::string fileNameOf(const std::string& case_name) {
+  std::string name = case_name;
+  for (char& c : name) {
+    const bool safe =
+        std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+    if (!safe) c = '_';
+  }
+  if (name.empty() || name == "." || name == "..") name = "case" + name;
+  return name;
+}
+
+// Draws a failing case's shot with its expected regions to DIR/<case>.png.
+void drawFailingCase(const engine::SuiteCase& c, const std::string& dir, PngPainter& painter) {
+  const engine::SceneRun run = engine::runScene(c.scene, true);
+  const engine::ShotOutcome outcome = engine::shotOutcome(run, c.scene.cue_ball);
+  const double pixel_m = render::pixelSizeFor(c.scene.table, kOverlayWidth_px, kOverlayHeight_px);
+  render::Picture picture = shotPicture(c.scene, run, pixel_m);
+  for (const engine::Expectation& e : c.expectations) {
+    if (e.kind == engine::Expectation::Kind::CueBallStopsIn) {
+      addRegion(picture, c.scene, outcome, e.region, pixel_m);
+    }
+  }
+  const std::string path = (std::filesystem::path(dir) / (fileNameOf(c.name) + ".png")).string();
+  painter.write(picture, path);
+  std::cout << "  picture: " << path << "\n";
 }
 
 std::string xmlEscaped(const std::string& text) {
@@ -91,6 +124,11 @@ int runCheck(const CheckFlags& flags) {
   std::unique_ptr<AtomicFile> junit;
   if (!flags.junit_path.empty()) junit = std::make_unique<AtomicFile>(flags.junit_path, "--junit");
   const engine::Suite suite = engine::loadSuite(flags.suite);
+  std::unique_ptr<PngPainter> painter;
+  if (!flags.png_dir.empty()) {
+    checkPngPath("--png", (std::filesystem::path(flags.png_dir) / "probe.png").string());
+    painter = std::make_unique<PngPainter>();
+  }
 
   std::cout << "suite: " << flags.suite << " (" << suite.cases.size() << " cases"
             << (flags.noise_samples > 0
@@ -106,6 +144,9 @@ int runCheck(const CheckFlags& flags) {
     const engine::CaseResult result = engine::runCase(c);
     const std::string line = caseLine(result);
     std::cout << line << "\n";
+    // A case whose shot did not run has nothing to draw.
+    if (painter && !result.passed && result.error.empty())
+      drawFailingCase(c, flags.png_dir, *painter);
     std::string noise_lines;
     if (flags.noise_samples > 0) {
       const engine::NoisyCaseResult noisy =
@@ -163,6 +204,8 @@ void addCheckCommand(CLI::App& parent) {
       "Run a shot suite: pass/fail per case with the measured values (docs/positional.md)");
   command->add_option("suite", flags->suite, "the suite file (JSON)")->required();
   command->add_option("--junit", flags->junit_path, "also write a JUnit XML report here");
+  command->add_option("--png", flags->png_dir,
+                      "draw each failing case's shot with its expected region to DIR/<case>.png");
   command->add_option("--noise", flags->noise_samples,
                       "also run N samples of each case with execution error and report the "
                       "probability of each expectation (pass/fail stays the noise-free shot's)");

@@ -12,6 +12,7 @@
 #include "tools/baize/check_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_command.h"
+#include "tools/baize/plan_command.h"
 #include "tools/baize/render_command.h"
 #include "tools/baize/simulate_command.h"
 #include "tools/baize/stress_command.h"
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
   addChartCommand(app);
   addCheckCommand(app);
   addCushionCommand(app);
+  addPlanCommand(app);
   addSimulateCommand(app);
   addRenderCommand(app);
   addStressCommand(app);

@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "engine/execution_noise.h"
@@ -14,8 +15,11 @@
 #include "engine/shot_outcome.h"
 #include "engine/shot_suite.h"
 #include "physics/value_text.h"
+#include "render/position_map.h"
+#include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/overlay_pictures.h"
 
 namespace baize::tools {
 namespace {
@@ -38,6 +42,7 @@ struct SweepFlags {
   std::string scene;
   std::vector<std::string> vary;
   std::string csv_path;
+  std::string png_path;   // the position map, when set
   std::string object;     // empty: any ball but the cue ball
   int noise_samples = 0;  // 0: no execution error columns
   std::uint64_t seed = 1;
@@ -62,7 +67,12 @@ bool objectPocketed(const engine::ShotOutcome& o, const std::string& object) {
 // The point's shot under execution error: how often the object ball and the cue ball fell, how
 // often the tip offset miscued, and the spread of the cue ball's finishing positions (mean and the
 // standard deviations along the principal axes of their covariance: the 1-sigma ellipse).
-std::string noiseColumns(const engine::Scene& scene, const SweepFlags& flags, long point) {
+struct NoiseSummary {
+  double p_object = 0, p_cue = 0, p_miscue = 0;
+  std::optional<render::SpreadEllipse> spread;  // fewer than 2 samples on the table: none
+};
+
+NoiseSummary noiseSummary(const engine::Scene& scene, const SweepFlags& flags, long point) {
   const engine::ExecutionNoise noise;  // the defaults (physics-notes section 4)
   engine::Scene sample = scene;
   int object = 0, cue = 0, miscues = 0, on_table = 0;
@@ -89,19 +99,34 @@ std::string noiseColumns(const engine::Scene& scene, const SweepFlags& flags, lo
     }
   }
   const double n = flags.noise_samples;
-  std::string columns = number(object / n) + ',' + number(cue / n) + ',' + number(miscues / n);
-  if (on_table < 2) return columns + ",,,,,";
+  NoiseSummary summary{object / n, cue / n, miscues / n, std::nullopt};
+  if (on_table < 2) return summary;
   const Eigen::Vector2d mean = sum / on_table;
   const Eigen::Matrix2d covariance =
       (products - on_table * mean * mean.transpose()) / (on_table - 1);
   // Principal axes of a symmetric 2x2 matrix in closed form.
   const double half_trace = (covariance(0, 0) + covariance(1, 1)) / 2;
   const double half_gap = std::hypot((covariance(0, 0) - covariance(1, 1)) / 2, covariance(0, 1));
-  const double major_deg =
-      0.5 * std::atan2(2 * covariance(0, 1), covariance(0, 0) - covariance(1, 1)) / kDegToRad;
-  return columns + ',' + number(mean.x()) + ',' + number(mean.y()) + ',' +
-         number(std::sqrt(std::max(0.0, half_trace + half_gap))) + ',' +
-         number(std::sqrt(std::max(0.0, half_trace - half_gap))) + ',' + number(major_deg);
+  render::SpreadEllipse e;
+  e.mean_m = mean;
+  e.sd_major_m = std::sqrt(std::max(0.0, half_trace + half_gap));
+  e.sd_minor_m = std::sqrt(std::max(0.0, half_trace - half_gap));
+  e.major_axis_rad = 0.5 * std::atan2(2 * covariance(0, 1), covariance(0, 0) - covariance(1, 1));
+  summary.spread = e;
+  return summary;
+}
+
+std::string noiseColumns(const NoiseSummary& s) {
+  std::string columns = number(s.p_object) + ',' + number(s.p_cue) + ',' + number(s.p_miscue);
+  if (!s.spread) return columns + ",,,,,";
+  return columns + ',' + number(s.spread->mean_m.x()) + ',' + number(s.spread->mean_m.y()) + ',' +
+         number(s.spread->sd_major_m) + ',' + number(s.spread->sd_minor_m) + ',' +
+         number(s.spread->major_axis_rad / kDegToRad);
+}
+
+// A grid index's place along its axis, [0, 1] (0.5 for an axis of one point).
+double fraction(const Axis& axis, long i) {
+  return axis.count > 1 ? static_cast<double>(i) / static_cast<double>(axis.count - 1) : 0.5;
 }
 
 const char* kParameterHelp =
@@ -167,6 +192,7 @@ void runSweep(const SweepFlags& flags) {
   }
   std::unique_ptr<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv = std::make_unique<AtomicFile>(flags.csv_path, "--csv");
+  if (!flags.png_path.empty()) checkPngPath("--png", flags.png_path);
   engine::Scene scene = engine::loadScene(flags.scene);
   if (!flags.object.empty()) {
     bool found = false;
@@ -186,9 +212,11 @@ void runSweep(const SweepFlags& flags) {
   out << '\n';
   const physics::CueShot base = scene.shot;
   const long inner = axes.size() == 2 ? axes[1].count : 1;
+  std::vector<render::MapPoint> map;
   for (long row = 0; row < rows; ++row) {
     const long i = row / inner, j = row % inner;
     scene.shot = base;
+    bool marked = false;  // this row's noise-free shot ran and has its marker
     setParameter(axes[0], axes[0].at(i), base, &scene.shot);
     out << number(axes[0].at(i)) << ',';
     if (axes.size() == 2) {
@@ -205,6 +233,15 @@ void runSweep(const SweepFlags& flags) {
           << o.cue_ball_pocketed << ',' << objectPocketed(o, flags.object) << ','
           << o.first_hit.value_or("") << ',' << engine::foulName(o.foul) << ',' << pocketed << ','
           << o.events << ',';
+      render::MapPoint p;
+      p.position_m = o.cue_ball_final_m;
+      p.outcome = o.cue_ball_pocketed               ? render::MapOutcome::CueBallPocketed
+                  : objectPocketed(o, flags.object) ? render::MapOutcome::ObjectPocketed
+                                                    : render::MapOutcome::Missed;
+      p.colour_fraction = fraction(axes[0], i);
+      if (axes.size() == 2) p.size_fraction = fraction(axes[1], j);
+      map.push_back(p);
+      marked = true;
     } catch (const std::exception& e) {
       // A grid point the strike refuses (a miscue) or that fails: a row saying why, no values.
       std::string why = e.what();
@@ -213,8 +250,22 @@ void runSweep(const SweepFlags& flags) {
       }
       out << ",,,,,,,," << why;
     }
-    if (flags.noise_samples > 0) out << ',' << noiseColumns(scene, flags, row);
+    if (flags.noise_samples > 0) {
+      const NoiseSummary summary = noiseSummary(scene, flags, row);
+      out << ',' << noiseColumns(summary);
+      // The spread belongs to the marker just made (none when the noise-free shot failed).
+      if (marked) map.back().spread = summary.spread;
+    }
     out << '\n';
+  }
+  if (!flags.png_path.empty()) {
+    std::vector<render::MapAxis> map_axes;
+    for (const Axis& a : axes) map_axes.push_back({a.name, a.at(0), a.at(a.count - 1)});
+    const double pixel_m = render::pixelSizeFor(scene.table, kOverlayWidth_px, kOverlayHeight_px);
+    PngPainter().write(
+        render::buildPositionMap(scene.table, map, map_axes, pixel_m, flags.noise_samples),
+        flags.png_path);
+    std::cerr << "picture: " << flags.png_path << " (" << map.size() << " finishing positions)\n";
   }
   if (csv) csv->commit();
 }
@@ -239,6 +290,10 @@ void addSweepCommand(CLI::App& parent) {
                       "pocketing probabilities and the spread of the cue ball's finishing "
                       "positions");
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)");
+  command->add_option("--png", flags->png_path,
+                      "also draw the position map here: finishing positions coloured by the "
+                      "first parameter, sized by the second, shaped by the outcome, with the "
+                      "1-sigma ellipses under --noise (PNG, 1600 x 800)");
   command->callback([flags] {
     if (const int status = runReportingErrors("sweep", [&] { runSweep(*flags); })) {
       throw CLI::RuntimeError(status);

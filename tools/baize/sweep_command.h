@@ -1,6 +1,6 @@
 // `baize sweep SCENE.json --vary NAME=START:STOP:STEP [--vary ...] [--csv OUT] [--object ID]`:
 // simulates the scene's shot over a grid of one or two shot parameters and writes the outcomes as
-// CSV (docs/positional.md, "Position maps"). The PNG map waits for shot rendering.
+// CSV, and with --png the position map (docs/positional.md, "Position maps").
 #pragma once
 
 namespace CLI {
