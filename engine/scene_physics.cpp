@@ -203,11 +203,8 @@ void validateScenePhysics(const SimulationParams& p, const physics::CueStrikePar
   validateGroup(source, "cushion", [&] {
     physics::validateCushionParams(p.cushion);
     validateCushionContactParams(p);
-    if (p.cushion_model == CushionModelChoice::SeedExact) {
-      // Physics has no separate check of the exact solver's options: one head-on impact runs it.
-      physics::solveCushionImpactExact(p.cushion, physics::incomingBall(1.0, M_PI / 2, 0, 0),
-                                       p.cushion_solver);
-    }
+    if (p.cushion_model == CushionModelChoice::SeedExact)
+      physics::validateExactSolverOptions(p.cushion_solver);
   });
   validateGroup(source, "ball_ball", [&] { physics::validateBallBallParams(p.ball_ball); });
   validateGroup(source, "cue", [&] { physics::validateCueStrikeParams(cue); });

@@ -1130,11 +1130,7 @@ CushionImpactResult ExactImpact::run() {
 
 }  // namespace
 
-CushionImpactResult solveCushionImpactExact(const CushionParams& params,
-                                            const BallVelocity& incoming,
-                                            const ExactSolverOptions& options) {
-  validateCushionParams(params);
-  validateIncomingBall(incoming);
+void validateExactSolverOptions(const ExactSolverOptions& options) {
   if (!(options.tolerance >= kMinTolerance && options.tolerance <= kMaxTolerance)) {
     rejectValue(
         "exact solver tolerance", options.tolerance,
@@ -1143,6 +1139,14 @@ CushionImpactResult solveCushionImpactExact(const CushionParams& params,
   if (!(options.trace_spacing_Ns >= 0) || !std::isfinite(options.trace_spacing_Ns)) {
     rejectValue("trace spacing (N s)", options.trace_spacing_Ns, "it must be a finite number >= 0");
   }
+}
+
+CushionImpactResult solveCushionImpactExact(const CushionParams& params,
+                                            const BallVelocity& incoming,
+                                            const ExactSolverOptions& options) {
+  validateCushionParams(params);
+  validateIncomingBall(incoming);
+  validateExactSolverOptions(options);
   return ExactImpact(params, incoming, options).run();
 }
 

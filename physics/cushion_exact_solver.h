@@ -25,6 +25,10 @@ struct ExactSolverOptions {
   double trace_spacing_Ns = 0;
 };
 
+// Throws std::invalid_argument naming the value unless the tolerance lies in [1e-14, 1e-2] and the
+// trace spacing is finite and >= 0.
+void validateExactSolverOptions(const ExactSolverOptions& options);
+
 // Throws std::invalid_argument on invalid parameters, incoming state or options.
 CushionImpactResult solveCushionImpactExact(const CushionParams& params,
                                             const BallVelocity& incoming,
