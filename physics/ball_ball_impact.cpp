@@ -441,7 +441,11 @@ void validateBallBallParams(const BallBallParams& p) {
   requireFinite("ball 1 mass (kg)", p.mass1_kg);
   requireFinite("ball 2 mass (kg)", p.mass2_kg);
   requireFinite("ball-ball restitution e", p.restitution);
-  if (!(p.radius_m > 0)) rejectValue("ball radius (m)", p.radius_m, "it must be > 0");
+  if (!(p.radius_m >= kMinBallRadius_m && p.radius_m <= kMaxBallRadius_m)) {
+    rejectValue("ball radius (m)", p.radius_m,
+                "it must lie in [" + valueText(kMinBallRadius_m) + ", " +
+                    valueText(kMaxBallRadius_m) + "]");
+  }
   if (!(p.mass1_kg > 0)) rejectValue("ball 1 mass (kg)", p.mass1_kg, "it must be > 0");
   if (!(p.mass2_kg > 0)) rejectValue("ball 2 mass (kg)", p.mass2_kg, "it must be > 0");
   if (!(p.restitution >= 0 && p.restitution <= 1)) {

@@ -306,6 +306,10 @@ TEST(CushionModelValidation, RejectsNonPhysicalMassRadiusAndContactHeight) {
   expectRejected(with([](CushionParams& p) { p.mass_kg = 0; }), {"mass", "= 0 "});
   expectRejected(with([](CushionParams& p) { p.radius_m = -0.25; }), {"radius", "-0.25"});
   expectRejected(with([](CushionParams& p) { p.radius_m = 0; }), {"radius", "= 0 "});
+  // Regression (found by fuzzing): a radius of 1e300 m made the exact solver exhaust its step
+  // budget (std::logic_error); radii outside [1 mm, 1 m] are refused with the range.
+  expectRejected(with([](CushionParams& p) { p.radius_m = 1e300; }), {"radius", "1e+300", "1]"});
+  expectRejected(with([](CushionParams& p) { p.radius_m = 1e-200; }), {"radius", "0.001"});
   // h must lie strictly inside (R, 2R) = (0.03125, 0.0625).
   expectRejected(with([](CushionParams& p) { p.contact_height_m = 0.03125; }),
                  {"contact height", "0.03125", "0.0625"});
