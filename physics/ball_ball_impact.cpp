@@ -519,22 +519,24 @@ double approachSpeed(const BallVelocity& ball1, const BallVelocity& ball2,
 void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball2,
                              const Eigen::Vector3d& n) {
   const char* axes[] = {"x", "y", "z"};
+  // Speeds and spins within the bounds of cushion_model.h (found by fuzzing: |v| = 1e306 m/s ran
+  // the Euler scheme out of its increments).
+  const std::string speed_rule =
+      "it must be a finite number of magnitude at most " + valueText(kMaxBallSpeed_mps);
+  const std::string spin_rule =
+      "it must be a finite number of magnitude at most " + valueText(kMaxBallSpin_radps);
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(ball1.v[i])) {
-      rejectValue(std::string("ball 1 v_") + axes[i] + " (m/s)", ball1.v[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball1.v[i]) <= kMaxBallSpeed_mps)) {
+      rejectValue(std::string("ball 1 v_") + axes[i] + " (m/s)", ball1.v[i], speed_rule);
     }
-    if (!std::isfinite(ball1.w[i])) {
-      rejectValue(std::string("ball 1 w_") + axes[i] + " (rad/s)", ball1.w[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball1.w[i]) <= kMaxBallSpin_radps)) {
+      rejectValue(std::string("ball 1 w_") + axes[i] + " (rad/s)", ball1.w[i], spin_rule);
     }
-    if (!std::isfinite(ball2.v[i])) {
-      rejectValue(std::string("ball 2 v_") + axes[i] + " (m/s)", ball2.v[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball2.v[i]) <= kMaxBallSpeed_mps)) {
+      rejectValue(std::string("ball 2 v_") + axes[i] + " (m/s)", ball2.v[i], speed_rule);
     }
-    if (!std::isfinite(ball2.w[i])) {
-      rejectValue(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball2.w[i]) <= kMaxBallSpin_radps)) {
+      rejectValue(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i], spin_rule);
     }
     if (!std::isfinite(n[i])) {
       rejectValue(std::string("line of centres n_") + axes[i], n[i], "it must be a finite number");

@@ -75,7 +75,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check(valid_input, "the exact solver accepted what validation refuses: " + where);
     check(finite(r.after), "the exact solver returned a non-finite state: " + where);
     check(r.after.v.z() == 0, "the exact solver lifted the ball: " + where);
-    check(r.after.v.y() <= 0, "the exact solver left the ball moving into the cushion: " + where);
+    // The end of compression is located to a fraction of the tolerance times v_y0; with e_e near 0
+    // restitution adds almost nothing, so that much inward speed may remain.
+    check(r.after.v.y() <= options.tolerance * ball.v.y(),
+          "the exact solver left the ball moving into the cushion: " + where);
     if (std::isfinite(energy_before)) {
       const double after = phys::kineticEnergy(p, r.after);
       check(after <= energy_before * (1 + kExactEnergySlackRelative),

@@ -637,6 +637,13 @@ TEST(BallBallImpact, RejectsBadContacts) {
                       "ball 2 w_y");
   expectValueRejected(resolve(ballOf({1, 0, 0.1}, Vector3d::Zero()), resting, Vector3d::UnitX()),
                       "ball 1 v_z");
+  // Regression (found by fuzzing): a speed of 1e306 m/s ran the Euler scheme out of increments
+  // (std::logic_error); speeds and spins beyond the bounds of cushion_model.h are refused.
+  expectValueRejected(
+      resolve(moving, ballOf({0, -1e306, 0}, Vector3d::Zero()), Vector3d::UnitX()), "ball 2 v_y");
+  expectValueRejected(
+      resolve(ballOf({1, 0, 0}, {0, 0, 2 * kMaxBallSpin_radps}), resting, Vector3d::UnitX()),
+      "ball 1 w_z");
   // Separating, and grazing (no normal approach): the caller must not ask for an impact.
   expectValueRejected(resolve(moving, resting, -Vector3d::UnitX()), "approach speed");
   expectValueRejected(resolve(moving, resting, Vector3d::UnitY()), "approach speed");

@@ -408,5 +408,21 @@ TEST(CushionModelValidation, RejectsNonFiniteIncomingComponents) {
   }
 }
 
+// Regression (found by fuzzing): an incoming v_y of 1.8e308 m/s overflowed the exact solver's
+// scales and exhausted its step budget (std::logic_error). Speeds and spins beyond the bounds are
+// refused with the bound; the bounds themselves are accepted.
+TEST(CushionModelValidation, RejectsSpeedsAndSpinsBeyondTheBounds) {
+  BallVelocity ball = incomingBall(1.0, degrees(60), 10, 5);
+  ball.v.y() = kMaxBallSpeed_mps;
+  ball.w.z() = -kMaxBallSpin_radps;
+  EXPECT_NO_THROW(validateIncomingBall(ball));
+  BallVelocity fast = ball;
+  fast.v.y() = std::numeric_limits<double>::max();
+  expectRejected([fast] { validateIncomingBall(fast); }, {"v_y", "at most 1000"});
+  BallVelocity spinning = ball;
+  spinning.w.x() = 2 * kMaxBallSpin_radps;
+  expectRejected([spinning] { validateIncomingBall(spinning); }, {"w_x", "2000000", "at most 1000000"});
+}
+
 }  // namespace
 }  // namespace baize::physics
