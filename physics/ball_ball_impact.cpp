@@ -446,8 +446,14 @@ void validateBallBallParams(const BallBallParams& p) {
                 "it must lie in [" + valueText(kMinBallRadius_m) + ", " +
                     valueText(kMaxBallRadius_m) + "]");
   }
-  if (!(p.mass1_kg > 0)) rejectValue("ball 1 mass (kg)", p.mass1_kg, "it must be > 0");
-  if (!(p.mass2_kg > 0)) rejectValue("ball 2 mass (kg)", p.mass2_kg, "it must be > 0");
+  const std::string mass_rule =
+      "it must lie in [" + valueText(kMinBallMass_kg) + ", " + valueText(kMaxBallMass_kg) + "]";
+  if (!(p.mass1_kg >= kMinBallMass_kg && p.mass1_kg <= kMaxBallMass_kg)) {
+    rejectValue("ball 1 mass (kg)", p.mass1_kg, mass_rule);
+  }
+  if (!(p.mass2_kg >= kMinBallMass_kg && p.mass2_kg <= kMaxBallMass_kg)) {
+    rejectValue("ball 2 mass (kg)", p.mass2_kg, mass_rule);
+  }
   if (!(p.restitution >= 0 && p.restitution <= 1)) {
     rejectValue("ball-ball restitution e", p.restitution, "it must lie in [0, 1]");
   }

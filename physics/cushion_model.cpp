@@ -17,7 +17,11 @@ void validateCushionParams(const CushionParams& p) {
   requireFinite("cushion restitution e_e", p.restitution);
   requireFinite("cushion friction mu_w", p.cushion_friction);
   requireFinite("cloth friction mu_s", p.cloth_friction);
-  if (p.mass_kg <= 0) rejectValue("ball mass (kg)", p.mass_kg, "it must be > 0");
+  if (!(p.mass_kg >= kMinBallMass_kg && p.mass_kg <= kMaxBallMass_kg)) {
+    rejectValue(
+        "ball mass (kg)", p.mass_kg,
+        "it must lie in [" + valueText(kMinBallMass_kg) + ", " + valueText(kMaxBallMass_kg) + "]");
+  }
   if (!(p.radius_m >= kMinBallRadius_m && p.radius_m <= kMaxBallRadius_m)) {
     rejectValue("ball radius (m)", p.radius_m,
                 "it must lie in [" + valueText(kMinBallRadius_m) + ", " +

@@ -34,6 +34,10 @@ struct CushionParams {
 // their step budgets. Three decades either side of real balls leave every physical use open.
 inline constexpr double kMinBallRadius_m = 1e-3;
 inline constexpr double kMaxBallRadius_m = 1.0;
+// The ball masses they accept, kg: cue-sport balls weigh 0.1 to 0.3 kg; subnormal masses (found by
+// fuzzing: 1e-309 kg) stalled the ball-ball integration the same way.
+inline constexpr double kMinBallMass_kg = 1e-3;
+inline constexpr double kMaxBallMass_kg = 1e3;
 
 // sin(theta) = (h - R) / R: theta is the angle of the contact normal at I above the horizontal.
 double contactSinTheta(const CushionParams& params);

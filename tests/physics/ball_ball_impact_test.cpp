@@ -663,6 +663,10 @@ TEST(BallBallImpact, RejectsBadParameters) {
   // Mathavan integration exhaust its step budget (std::logic_error); they are refused up front.
   expectValueRejected(with([](auto& p) { p.radius_m = 1e-200; }, snooker), "ball radius (m)");
   expectValueRejected(with([](auto& p) { p.radius_m = 1e300; }, snooker), "ball radius (m)");
+  // Likewise subnormal masses (1e-309 kg).
+  expectValueRejected(with([](auto& p) { p.mass1_kg = p.mass2_kg = 1e-309; }, snooker),
+                      "ball 1 mass (kg)");
+  expectValueRejected(with([](auto& p) { p.mass2_kg = 1e9; }, pool), "ball 2 mass (kg)");
   expectValueRejected(with([](auto& p) { p.restitution = 1.2; }, pool), "ball-ball restitution e");
   expectValueRejected(with([](auto& p) { p.restitution = std::nan(""); }, snooker),
                       "ball-ball restitution e");

@@ -302,7 +302,8 @@ TEST(CushionModelValidation, RejectsNonPhysicalMassRadiusAndContactHeight) {
     change(p);
     return [p] { validateCushionParams(p); };
   };
-  expectRejected(with([](CushionParams& p) { p.mass_kg = -0.5; }), {"mass", "-0.5", "> 0"});
+  expectRejected(with([](CushionParams& p) { p.mass_kg = -0.5; }),
+                 {"mass", "-0.5", "[0.001, 1000]"});
   expectRejected(with([](CushionParams& p) { p.mass_kg = 0; }), {"mass", "= 0 "});
   expectRejected(with([](CushionParams& p) { p.radius_m = -0.25; }), {"radius", "-0.25"});
   expectRejected(with([](CushionParams& p) { p.radius_m = 0; }), {"radius", "= 0 "});
