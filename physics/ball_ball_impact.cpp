@@ -566,6 +566,11 @@ void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball
         "the balls must approach along the line of centres (> 0); a separating or grazing pair "
         "needs no impact");
   }
+  if (!(approach >= kMinApproachSpeed_mps)) {
+    rejectValue("approach speed (v1 - v2) . n (m/s)", approach,
+                "it must be at least " + valueText(kMinApproachSpeed_mps) +
+                    " (a slower approach is no impact the solvers can resolve)");
+  }
 }
 
 double ballBallFriction(const BallBallParams& params, double slip_speed_mps) {

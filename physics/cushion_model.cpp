@@ -91,6 +91,11 @@ void validateIncomingBall(const BallVelocity& ball) {
         "incoming v_y (m/s)", ball.v.y(),
         "the ball must move into the cushion (v_y > 0; the angle must lie in (0, 180) degrees)");
   }
+  if (!(ball.v.y() >= kMinApproachSpeed_mps)) {
+    rejectValue("incoming v_y (m/s)", ball.v.y(),
+                "it must be at least " + valueText(kMinApproachSpeed_mps) +
+                    " (a slower approach is no impact the solvers can resolve)");
+  }
 }
 
 Eigen::Vector2d cushionSlip(const CushionParams& params, const BallVelocity& ball) {

@@ -66,9 +66,16 @@ BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_rad
 // solver's step budget).
 inline constexpr double kMaxBallSpeed_mps = 1e3;
 inline constexpr double kMaxBallSpin_radps = 1e6;
+// The smallest normal approach speed an impact model resolves, m/s. Approach speeds near the
+// subnormal range (found by fuzzing: 5e-324 m/s at a cushion, 1e-311 m/s between balls) make the
+// impulse scales and first steps underflow to zero, and the solvers stall. The event loop never
+// comes near it: its speeds are 0 or at least kSpeedEpsilon_mps (1e-9), so approach speeds are 0
+// or above about 1e-25 m/s (rounding of a 1e-9 m/s speed).
+inline constexpr double kMinApproachSpeed_mps = 1e-100;
 
 // Throws std::invalid_argument unless every component is finite and within the bounds above, v.z
-// is 0 (the ball is on the table) and v.y > 0 (the ball moves into the cushion).
+// is 0 (the ball is on the table) and v.y >= kMinApproachSpeed_mps (the ball moves into the
+// cushion).
 void validateIncomingBall(const BallVelocity& ball);
 
 // Slip velocity of the ball's surface at the cushion contact I, in the tangent basis (x, Y') with

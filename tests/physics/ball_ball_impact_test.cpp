@@ -648,6 +648,10 @@ TEST(BallBallImpact, RejectsBadContacts) {
   expectValueRejected(resolve(moving, resting, -Vector3d::UnitX()), "approach speed");
   expectValueRejected(resolve(moving, resting, Vector3d::UnitY()), "approach speed");
   expectValueRejected(resolve(resting, resting, Vector3d::UnitX()), "approach speed");
+  // Regression (found by fuzzing): an approach of 1e-311 m/s (subnormal) stalled the Mathavan
+  // integration; approaches below kMinApproachSpeed_mps are refused.
+  expectValueRejected(resolve(ballOf({1e-311, 0, 0}, Vector3d::Zero()), resting, Vector3d::UnitX()),
+                      "approach speed");
 }
 
 TEST(BallBallImpact, RejectsBadParameters) {

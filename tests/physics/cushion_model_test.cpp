@@ -423,6 +423,10 @@ TEST(CushionModelValidation, RejectsSpeedsAndSpinsBeyondTheBounds) {
   BallVelocity spinning = ball;
   spinning.w.x() = 2 * kMaxBallSpin_radps;
   expectRejected([spinning] { validateIncomingBall(spinning); }, {"w_x", "2000000", "at most 1000000"});
+  // Regression (found by fuzzing): v_y = 5e-324 m/s stalled the exact solver (zero first step).
+  BallVelocity creeping = ball;
+  creeping.v.y() = std::numeric_limits<double>::denorm_min();
+  expectRejected([creeping] { validateIncomingBall(creeping); }, {"v_y", "at least 1e-100"});
 }
 
 }  // namespace
