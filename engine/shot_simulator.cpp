@@ -1,5 +1,6 @@
 #include "engine/shot_simulator.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -257,7 +258,26 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
       }
     }
   }
+  // A table with cushions encloses its balls: a centre outside the box of its cushion ends, jaws
+  // and capture circles is off the table even where no cushion lies across its normal (found by
+  // fuzzing: a ball at x = 1e306 m was accepted).
+  Eigen::AlignedBox2d extent;
+  for (const CushionSegment& c : table.cushions) extent.extend(c.start_m).extend(c.end_m);
+  auto extendByCircle = [&](const Eigen::Vector2d& centre_m, double radius_m) {
+    extent.extend(Eigen::Vector2d(centre_m.array() - radius_m));
+    extent.extend(Eigen::Vector2d(centre_m.array() + radius_m));
+  };
+  for (const JawArc& jaw : table.jaws) extendByCircle(jaw.centre_m, jaw.radius_m);
+  for (const Circle& pocket : table.pockets) extendByCircle(pocket.centre_m, pocket.radius_m);
   for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (!table.cushions.empty() && !extent.contains(balls[i].position)) {
+      const Eigen::Vector2d& q = balls[i].position;
+      const int axis = q.x() < extent.min().x() || q.x() > extent.max().x() ? 0 : 1;
+      physics::rejectValue(who(i) + " is off the table: its " + (axis == 0 ? "x" : "y") + " (m)",
+                           q[axis],
+                           "it must lie within [" + physics::valueText(extent.min()[axis]) + ", " +
+                               physics::valueText(extent.max()[axis]) + "], the table's extent");
+    }
     for (std::size_t k = 0; k < table.jaws.size(); ++k) {
       const JawArc& jaw = table.jaws[k];
       const double distance = (balls[i].position - jaw.centre_m).norm();

@@ -441,9 +441,19 @@ void validateBallBallParams(const BallBallParams& p) {
   requireFinite("ball 1 mass (kg)", p.mass1_kg);
   requireFinite("ball 2 mass (kg)", p.mass2_kg);
   requireFinite("ball-ball restitution e", p.restitution);
-  if (!(p.radius_m > 0)) rejectValue("ball radius (m)", p.radius_m, "it must be > 0");
-  if (!(p.mass1_kg > 0)) rejectValue("ball 1 mass (kg)", p.mass1_kg, "it must be > 0");
-  if (!(p.mass2_kg > 0)) rejectValue("ball 2 mass (kg)", p.mass2_kg, "it must be > 0");
+  if (!(p.radius_m >= kMinBallRadius_m && p.radius_m <= kMaxBallRadius_m)) {
+    rejectValue("ball radius (m)", p.radius_m,
+                "it must lie in [" + valueText(kMinBallRadius_m) + ", " +
+                    valueText(kMaxBallRadius_m) + "]");
+  }
+  const std::string mass_rule =
+      "it must lie in [" + valueText(kMinBallMass_kg) + ", " + valueText(kMaxBallMass_kg) + "]";
+  if (!(p.mass1_kg >= kMinBallMass_kg && p.mass1_kg <= kMaxBallMass_kg)) {
+    rejectValue("ball 1 mass (kg)", p.mass1_kg, mass_rule);
+  }
+  if (!(p.mass2_kg >= kMinBallMass_kg && p.mass2_kg <= kMaxBallMass_kg)) {
+    rejectValue("ball 2 mass (kg)", p.mass2_kg, mass_rule);
+  }
   if (!(p.restitution >= 0 && p.restitution <= 1)) {
     rejectValue("ball-ball restitution e", p.restitution, "it must lie in [0, 1]");
   }
@@ -515,22 +525,24 @@ double approachSpeed(const BallVelocity& ball1, const BallVelocity& ball2,
 void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball2,
                              const Eigen::Vector3d& n) {
   const char* axes[] = {"x", "y", "z"};
+  // Speeds and spins within the bounds of cushion_model.h (found by fuzzing: |v| = 1e306 m/s ran
+  // the Euler scheme out of its increments).
+  const std::string speed_rule =
+      "it must be a finite number of magnitude at most " + valueText(kMaxBallSpeed_mps);
+  const std::string spin_rule =
+      "it must be a finite number of magnitude at most " + valueText(kMaxBallSpin_radps);
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(ball1.v[i])) {
-      rejectValue(std::string("ball 1 v_") + axes[i] + " (m/s)", ball1.v[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball1.v[i]) <= kMaxBallSpeed_mps)) {
+      rejectValue(std::string("ball 1 v_") + axes[i] + " (m/s)", ball1.v[i], speed_rule);
     }
-    if (!std::isfinite(ball1.w[i])) {
-      rejectValue(std::string("ball 1 w_") + axes[i] + " (rad/s)", ball1.w[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball1.w[i]) <= kMaxBallSpin_radps)) {
+      rejectValue(std::string("ball 1 w_") + axes[i] + " (rad/s)", ball1.w[i], spin_rule);
     }
-    if (!std::isfinite(ball2.v[i])) {
-      rejectValue(std::string("ball 2 v_") + axes[i] + " (m/s)", ball2.v[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball2.v[i]) <= kMaxBallSpeed_mps)) {
+      rejectValue(std::string("ball 2 v_") + axes[i] + " (m/s)", ball2.v[i], speed_rule);
     }
-    if (!std::isfinite(ball2.w[i])) {
-      rejectValue(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball2.w[i]) <= kMaxBallSpin_radps)) {
+      rejectValue(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i], spin_rule);
     }
     if (!std::isfinite(n[i])) {
       rejectValue(std::string("line of centres n_") + axes[i], n[i], "it must be a finite number");
@@ -553,6 +565,11 @@ void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball
         "approach speed (v1 - v2) . n (m/s)", approach,
         "the balls must approach along the line of centres (> 0); a separating or grazing pair "
         "needs no impact");
+  }
+  if (!(approach >= kMinApproachSpeed_mps)) {
+    rejectValue("approach speed (v1 - v2) . n (m/s)", approach,
+                "it must be at least " + valueText(kMinApproachSpeed_mps) +
+                    " (a slower approach is no impact the solvers can resolve)");
   }
 }
 

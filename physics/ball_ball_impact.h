@@ -94,7 +94,8 @@ void validateBallBallParams(const BallBallParams& params);
 double approachSpeed(const BallVelocity& ball1, const BallVelocity& ball2,
                      const Eigen::Vector3d& line_of_centres);
 
-// Throws std::invalid_argument unless every component is finite, both v.z are 0, n is a horizontal
+// Throws std::invalid_argument unless every component is finite (speeds and spins within
+// kMaxBallSpeed_mps and kMaxBallSpin_radps of cushion_model.h), both v.z are 0, n is a horizontal
 // unit vector (within kLineOfCentresTolerance) and the balls approach (approachSpeed > 0). The
 // models then use n projected on the table plane and renormalised.
 void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball2,

@@ -653,7 +653,10 @@ class ExactImpact {
     // The held law may end anywhere its error is of the order of its limit: located loosely.
     if (event.creep_end) return kCreepEndLooseness * creep_error_limit_;
     if (!event.phase_end) return kEventResidualFraction * options_.tolerance;
-    const double scale = compressing_ ? velocity_scale_ : M_ * velocity_scale_ * velocity_scale_;
+    // The phase ends are measured against the normal motion itself (v_y0, and the compression
+    // work), not the whole velocity scale: in a grazing impact v_y0 can lie below tolerance times
+    // |v| + R |w|, and compression would "end" at once with the ball still moving in.
+    const double scale = compressing_ ? vy0_ : result_.compression_work_J;
     return kEventResidualFraction * options_.tolerance * scale;
   }
   // How far inside its cone held contact k's stick friction would be at z (negative: outside).

@@ -17,8 +17,16 @@ void validateCushionParams(const CushionParams& p) {
   requireFinite("cushion restitution e_e", p.restitution);
   requireFinite("cushion friction mu_w", p.cushion_friction);
   requireFinite("cloth friction mu_s", p.cloth_friction);
-  if (p.mass_kg <= 0) rejectValue("ball mass (kg)", p.mass_kg, "it must be > 0");
-  if (p.radius_m <= 0) rejectValue("ball radius (m)", p.radius_m, "it must be > 0");
+  if (!(p.mass_kg >= kMinBallMass_kg && p.mass_kg <= kMaxBallMass_kg)) {
+    rejectValue(
+        "ball mass (kg)", p.mass_kg,
+        "it must lie in [" + valueText(kMinBallMass_kg) + ", " + valueText(kMaxBallMass_kg) + "]");
+  }
+  if (!(p.radius_m >= kMinBallRadius_m && p.radius_m <= kMaxBallRadius_m)) {
+    rejectValue("ball radius (m)", p.radius_m,
+                "it must lie in [" + valueText(kMinBallRadius_m) + ", " +
+                    valueText(kMaxBallRadius_m) + "]");
+  }
   if (!(p.contact_height_m > p.radius_m && p.contact_height_m < 2 * p.radius_m)) {
     rejectValue("cushion contact height h (m)", p.contact_height_m,
                 "it must lie strictly between R = " + valueText(p.radius_m) + " and 2R = " +
@@ -65,13 +73,15 @@ BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_rad
 void validateIncomingBall(const BallVelocity& ball) {
   const char* names[] = {"v_x", "v_y", "v_z", "w_x", "w_y", "w_z"};
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(ball.v[i])) {
-      rejectValue(std::string("incoming ") + names[i] + " (m/s)", ball.v[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball.v[i]) <= kMaxBallSpeed_mps)) {
+      rejectValue(
+          std::string("incoming ") + names[i] + " (m/s)", ball.v[i],
+          "it must be a finite number of magnitude at most " + valueText(kMaxBallSpeed_mps));
     }
-    if (!std::isfinite(ball.w[i])) {
-      rejectValue(std::string("incoming ") + names[i + 3] + " (rad/s)", ball.w[i],
-                  "it must be a finite number");
+    if (!(std::abs(ball.w[i]) <= kMaxBallSpin_radps)) {
+      rejectValue(
+          std::string("incoming ") + names[i + 3] + " (rad/s)", ball.w[i],
+          "it must be a finite number of magnitude at most " + valueText(kMaxBallSpin_radps));
     }
   }
   if (ball.v.z() != 0)
@@ -80,6 +90,11 @@ void validateIncomingBall(const BallVelocity& ball) {
     rejectValue(
         "incoming v_y (m/s)", ball.v.y(),
         "the ball must move into the cushion (v_y > 0; the angle must lie in (0, 180) degrees)");
+  }
+  if (!(ball.v.y() >= kMinApproachSpeed_mps)) {
+    rejectValue("incoming v_y (m/s)", ball.v.y(),
+                "it must be at least " + valueText(kMinApproachSpeed_mps) +
+                    " (a slower approach is no impact the solvers can resolve)");
   }
 }
 

@@ -28,6 +28,17 @@ struct CushionParams {
   double cloth_friction = 0.212;   // mu_s, ball on cloth
 };
 
+// The ball radii the impact models accept, m. Cue-sport balls are 47.6 to 68 mm; the models are
+// scale-free, but their adaptive solvers measure errors and events against R |w| and v together,
+// and radii hundreds of orders of magnitude off (found by fuzzing: 1e-200 m, 1e300 m) exhaust
+// their step budgets. Three decades either side of real balls leave every physical use open.
+inline constexpr double kMinBallRadius_m = 1e-3;
+inline constexpr double kMaxBallRadius_m = 1.0;
+// The ball masses they accept, kg: cue-sport balls weigh 0.1 to 0.3 kg; subnormal masses (found by
+// fuzzing: 1e-309 kg) stalled the ball-ball integration the same way.
+inline constexpr double kMinBallMass_kg = 1e-3;
+inline constexpr double kMaxBallMass_kg = 1e3;
+
 // sin(theta) = (h - R) / R: theta is the angle of the contact normal at I above the horizontal.
 double contactSinTheta(const CushionParams& params);
 
@@ -49,8 +60,22 @@ struct BallVelocity {
 BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_radps,
                           double sidespin_radps);
 
-// Throws std::invalid_argument unless every component is finite, v.z is 0 (the ball is on the
-// table) and v.y > 0 (the ball moves into the cushion).
+// Bounds on the incoming velocity components, m/s and rad/s. Cue balls leave the tip below 20 m/s
+// with spins below about 500 rad/s; the bounds are far above that and far below where the solvers'
+// squared speeds and scales overflow (found by fuzzing: v_y = 1.8e308 m/s exhausted the exact
+// solver's step budget).
+inline constexpr double kMaxBallSpeed_mps = 1e3;
+inline constexpr double kMaxBallSpin_radps = 1e6;
+// The smallest normal approach speed an impact model resolves, m/s. Approach speeds near the
+// subnormal range (found by fuzzing: 5e-324 m/s at a cushion, 1e-311 m/s between balls) make the
+// impulse scales and first steps underflow to zero, and the solvers stall. The event loop never
+// comes near it: its speeds are 0 or at least kSpeedEpsilon_mps (1e-9), so approach speeds are 0
+// or above about 1e-25 m/s (rounding of a 1e-9 m/s speed).
+inline constexpr double kMinApproachSpeed_mps = 1e-100;
+
+// Throws std::invalid_argument unless every component is finite and within the bounds above, v.z
+// is 0 (the ball is on the table) and v.y >= kMinApproachSpeed_mps (the ball moves into the
+// cushion).
 void validateIncomingBall(const BallVelocity& ball);
 
 // Slip velocity of the ball's surface at the cushion contact I, in the tangent basis (x, Y') with

@@ -379,6 +379,12 @@ TEST(ShotSimulator, BadScenesAreRejectedWithTheValue) {
   EXPECT_THAT(message({ballAt(0, 0), ballAt(0.03, 0)}), HasSubstr("ball 1 overlaps ball 0"));
   EXPECT_THAT(message({ballAt(1.27, 0)}), HasSubstr("beyond cushion"));
   EXPECT_THAT(message({ballAt(std::nan(""), 0)}), HasSubstr("ball 0"));
+  // Regression (found by fuzzing): a ball far outside the table, where no cushion lies across its
+  // normal, was accepted; a ball beyond a corner's diagonal likewise.
+  EXPECT_THAT(message({ballAt(0, 0), ballAt(0x1p1017, 0x1p964)}),
+              HasSubstr("ball 1 is off the table: its x (m) = "));
+  EXPECT_THAT(message({ballAt(0.3, -5)}), HasSubstr("ball 0 is off the table: its y (m) = -5"));
+  EXPECT_THAT(message({ballAt(1.5, 0.8)}), HasSubstr("off the table"));
   SimulationParams wrong = p;
   wrong.cloth.radius_m = 0.03;
   EXPECT_THROW(simulate(wrong, table, {ballAt(0, 0)}), std::invalid_argument);

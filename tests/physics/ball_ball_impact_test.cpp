@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/physics/fp_trap_support.h"
 #include "tests/physics/rejection_test_support.h"
 
 namespace baize::physics {
@@ -199,6 +200,49 @@ TEST(BallBallImpact, KineticEnergyNeverGrows) {
         EXPECT_LE(kineticEnergy(p, r.ball1, r.ball2), before * (1 + kEnergyRoundoffRelative));
         EXPECT_EQ(r.ball1.v.z(), 0.0);
         EXPECT_EQ(r.ball2.v.z(), 0.0);
+      }
+    }
+  }
+}
+
+// Both models (and the Euler reference scheme) with floating-point exceptions trapped, on random
+// impacts and on the edges where a direction is undefined: contact slip exactly zero (a stun shot
+// head on, two balls rolling with matching surfaces), no friction, e = 0, slow approach, and a
+// slip that has no horizontal or no vertical part. No path may divide by a zero slip speed or
+// produce a NaN; energy still never grows.
+TEST(BallBallImpact, NoFloatingPointExceptionEvenWhereTheSlipIsExactlyZero) {
+  std::vector<Impact> impacts = randomImpacts(211, 300);
+  const Vector3d x = Vector3d::UnitX();
+  const double R = poolParams().radius_m;
+  impacts.push_back(
+      {ballOf({2, 0, 0}, Vector3d::Zero()), ballOf(Vector3d::Zero(), Vector3d::Zero()), x});
+  impacts.push_back({rollingBall({2, 0, 0}, R), rollingBall({0.5, 0, 0}, R), x});
+  // Slip purely vertical (topspin only, head on) and purely horizontal (sidespin only).
+  impacts.push_back({ballOf({1, 0, 0}, {0, 30, 0}), ballOf(Vector3d::Zero(), Vector3d::Zero()), x});
+  impacts.push_back({ballOf({1, 0, 0}, {0, 0, 30}), ballOf(Vector3d::Zero(), Vector3d::Zero()), x});
+  // Approaching at 1 um/s: the impulses are tiny but must stay finite.
+  impacts.push_back(
+      {ballOf({1e-6, 0, 0}, Vector3d::Zero()), ballOf(Vector3d::Zero(), Vector3d::Zero()), x});
+  std::vector<BallBallParams> models = bothModels();
+  for (const BallBallParams& p : bothModels()) {
+    models.push_back(frictionless(p, 1.0));
+    models.push_back(frictionless(p, 0.0));
+  }
+  BallBallParams euler = poolMathavanParams();
+  euler.fixed_steps = 200;
+  models.push_back(euler);
+  for (const BallBallParams& p : models) {
+    for (const Impact& i : impacts) {
+      BallBallImpactResult r;
+      {
+        test::FloatingPointTraps traps;
+        r = resolveBallBallImpact(p, i.b1, i.b2, i.n);
+      }
+      EXPECT_TRUE(r.ball1.v.allFinite() && r.ball1.w.allFinite() && r.ball2.v.allFinite() &&
+                  r.ball2.w.allFinite());
+      if (p.fixed_steps == 0) {
+        EXPECT_LE(kineticEnergy(p, r.ball1, r.ball2),
+                  kineticEnergy(p, i.b1, i.b2) * (1 + kEnergyRoundoffRelative));
       }
     }
   }
@@ -593,10 +637,21 @@ TEST(BallBallImpact, RejectsBadContacts) {
                       "ball 2 w_y");
   expectValueRejected(resolve(ballOf({1, 0, 0.1}, Vector3d::Zero()), resting, Vector3d::UnitX()),
                       "ball 1 v_z");
+  // Regression (found by fuzzing): a speed of 1e306 m/s ran the Euler scheme out of increments
+  // (std::logic_error); speeds and spins beyond the bounds of cushion_model.h are refused.
+  expectValueRejected(
+      resolve(moving, ballOf({0, -1e306, 0}, Vector3d::Zero()), Vector3d::UnitX()), "ball 2 v_y");
+  expectValueRejected(
+      resolve(ballOf({1, 0, 0}, {0, 0, 2 * kMaxBallSpin_radps}), resting, Vector3d::UnitX()),
+      "ball 1 w_z");
   // Separating, and grazing (no normal approach): the caller must not ask for an impact.
   expectValueRejected(resolve(moving, resting, -Vector3d::UnitX()), "approach speed");
   expectValueRejected(resolve(moving, resting, Vector3d::UnitY()), "approach speed");
   expectValueRejected(resolve(resting, resting, Vector3d::UnitX()), "approach speed");
+  // Regression (found by fuzzing): an approach of 1e-311 m/s (subnormal) stalled the Mathavan
+  // integration; approaches below kMinApproachSpeed_mps are refused.
+  expectValueRejected(resolve(ballOf({1e-311, 0, 0}, Vector3d::Zero()), resting, Vector3d::UnitX()),
+                      "approach speed");
 }
 
 TEST(BallBallImpact, RejectsBadParameters) {
@@ -608,6 +663,14 @@ TEST(BallBallImpact, RejectsBadParameters) {
   const BallBallParams pool = poolParams(), snooker = snookerMathavan2014Params();
   expectValueRejected(with([](auto& p) { p.mass1_kg = -0.1; }, pool), "ball 1 mass (kg)");
   expectValueRejected(with([](auto& p) { p.radius_m = 0; }, pool), "ball radius (m)");
+  // Regression (found by fuzzing): radii hundreds of orders of magnitude from a ball's made the
+  // Mathavan integration exhaust its step budget (std::logic_error); they are refused up front.
+  expectValueRejected(with([](auto& p) { p.radius_m = 1e-200; }, snooker), "ball radius (m)");
+  expectValueRejected(with([](auto& p) { p.radius_m = 1e300; }, snooker), "ball radius (m)");
+  // Likewise subnormal masses (1e-309 kg).
+  expectValueRejected(with([](auto& p) { p.mass1_kg = p.mass2_kg = 1e-309; }, snooker),
+                      "ball 1 mass (kg)");
+  expectValueRejected(with([](auto& p) { p.mass2_kg = 1e9; }, pool), "ball 2 mass (kg)");
   expectValueRejected(with([](auto& p) { p.restitution = 1.2; }, pool), "ball-ball restitution e");
   expectValueRejected(with([](auto& p) { p.restitution = std::nan(""); }, snooker),
                       "ball-ball restitution e");

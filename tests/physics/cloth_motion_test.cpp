@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/physics/fp_trap_support.h"
 #include "tests/physics/rejection_test_support.h"
 
 namespace baize::physics {
@@ -387,6 +388,63 @@ TEST(ClothMotionTest, ThresholdsClassifyRoundingAsRest) {
   const BallState spinning_in_place = makeBall({0, 0}, Vector3d::Zero(), {0, 50, 0});
   EXPECT_EQ(motionState(params, spinning_in_place), MotionState::Sliding);
   EXPECT_GT(advance(params, spinning_in_place, 0.01).velocity.x(), 0);
+}
+
+// ---- Floating-point exceptions ------------------------------------------------------------------
+
+// Every entry point with invalid operations, division by zero and overflow trapped, on the states
+// where a direction is undefined or a duration is zero: slip exactly zero (rolling), slip just at
+// and just beyond the threshold, speed exactly zero with spin, spin exactly zero, nothing moving,
+// each axis alone, and fast random states. Each is advanced to its state change, through it, and
+// far beyond (at rest at last), and energy never grows along the way.
+TEST(ClothMotionTest, NoFloatingPointExceptionAtZeroSlipSpeedOrSpin) {
+  std::vector<BallState> balls;
+  for (const ClothParams& params : bothCloths()) {
+    const double r = params.radius_m;
+    balls.push_back(makeBall({0, 0}, {1, 0, 0}, rollingSpin(params, {1, 0}, 0)));  // u = 0 exactly
+    balls.push_back(makeBall({0, 0}, {0, -2, 0}, rollingSpin(params, {0, -2}, 5)));
+    balls.push_back(makeBall({0, 0}, {1, 0, 0}, {0, (1 - kSlipSpeedEpsilon_mps) / r, 0}));
+    balls.push_back(makeBall({0, 0}, {1, 0, 0}, {0, (1 - 2 * kSlipSpeedEpsilon_mps) / r, 0}));
+  }
+  balls.push_back(makeBall({0.1, 0.2}, Vector3d::Zero(), Vector3d::Zero()));  // at rest
+  balls.push_back(makeBall({0, 0}, Vector3d::Zero(), {0, 0, 30}));            // spinning only
+  balls.push_back(makeBall({0, 0}, Vector3d::Zero(), {40, 0, 0}));            // slip, no speed
+  balls.push_back(makeBall({0, 0}, {3, 0, 0}, Vector3d::Zero()));             // stun
+  balls.push_back(makeBall({0, 0}, {kSpeedEpsilon_mps, 0, 0}, Vector3d::Zero()));
+  balls.push_back(makeBall({0, 0}, {0, 0, 0}, {0, 0, kSpinEpsilon_radps}));
+  std::mt19937_64 rng(61);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (int i = 0; i < 200; ++i) {
+    balls.push_back(makeBall({unit(rng), unit(rng)}, {16 * unit(rng), 16 * unit(rng), 0},
+                             {500 * unit(rng), 500 * unit(rng), 500 * unit(rng)}));
+  }
+  for (const ClothParams& params : bothCloths()) {
+    for (const BallState& ball : balls) {
+      double change_s = 0;
+      BallState at_change, beyond, at_rest;
+      {
+        test::FloatingPointTraps traps;
+        change_s = timeToStateChange(params, ball);
+        motionState(params, ball);
+        positionQuadratic(params, ball);
+        if (std::isfinite(change_s)) {
+          at_change = advanceWithinState(params, ball, change_s);
+          beyond = advance(params, ball, 2 * change_s);
+        }
+        at_rest = advance(params, ball, 1e3);  // seconds: everything has stopped
+      }
+      const double energy = specificKineticEnergy(params, ball);
+      if (std::isfinite(change_s)) {
+        EXPECT_GE(change_s, 0);
+        EXPECT_LE(specificKineticEnergy(params, at_change), energy * (1 + kEnergyRoundingRelative));
+        EXPECT_LE(specificKineticEnergy(params, beyond), energy * (1 + kEnergyRoundingRelative));
+      } else {
+        EXPECT_EQ(motionState(params, ball), MotionState::Stationary);
+      }
+      EXPECT_EQ(motionState(params, at_rest), MotionState::Stationary);
+      EXPECT_TRUE(at_rest.position.allFinite());
+    }
+  }
 }
 
 // ---- Against a numerical integration of the equations of motion ---------------------------------

@@ -302,10 +302,15 @@ TEST(CushionModelValidation, RejectsNonPhysicalMassRadiusAndContactHeight) {
     change(p);
     return [p] { validateCushionParams(p); };
   };
-  expectRejected(with([](CushionParams& p) { p.mass_kg = -0.5; }), {"mass", "-0.5", "> 0"});
+  expectRejected(with([](CushionParams& p) { p.mass_kg = -0.5; }),
+                 {"mass", "-0.5", "[0.001, 1000]"});
   expectRejected(with([](CushionParams& p) { p.mass_kg = 0; }), {"mass", "= 0 "});
   expectRejected(with([](CushionParams& p) { p.radius_m = -0.25; }), {"radius", "-0.25"});
   expectRejected(with([](CushionParams& p) { p.radius_m = 0; }), {"radius", "= 0 "});
+  // Regression (found by fuzzing): a radius of 1e300 m made the exact solver exhaust its step
+  // budget (std::logic_error); radii outside [1 mm, 1 m] are refused with the range.
+  expectRejected(with([](CushionParams& p) { p.radius_m = 1e300; }), {"radius", "1e+300", "1]"});
+  expectRejected(with([](CushionParams& p) { p.radius_m = 1e-200; }), {"radius", "0.001"});
   // h must lie strictly inside (R, 2R) = (0.03125, 0.0625).
   expectRejected(with([](CushionParams& p) { p.contact_height_m = 0.03125; }),
                  {"contact height", "0.03125", "0.0625"});
@@ -402,6 +407,26 @@ TEST(CushionModelValidation, RejectsNonFiniteIncomingComponents) {
       expectRejected([ball] { validateIncomingBall(ball); }, {names[i], shown});
     }
   }
+}
+
+// Regression (found by fuzzing): an incoming v_y of 1.8e308 m/s overflowed the exact solver's
+// scales and exhausted its step budget (std::logic_error). Speeds and spins beyond the bounds are
+// refused with the bound; the bounds themselves are accepted.
+TEST(CushionModelValidation, RejectsSpeedsAndSpinsBeyondTheBounds) {
+  BallVelocity ball = incomingBall(1.0, degrees(60), 10, 5);
+  ball.v.y() = kMaxBallSpeed_mps;
+  ball.w.z() = -kMaxBallSpin_radps;
+  EXPECT_NO_THROW(validateIncomingBall(ball));
+  BallVelocity fast = ball;
+  fast.v.y() = std::numeric_limits<double>::max();
+  expectRejected([fast] { validateIncomingBall(fast); }, {"v_y", "at most 1000"});
+  BallVelocity spinning = ball;
+  spinning.w.x() = 2 * kMaxBallSpin_radps;
+  expectRejected([spinning] { validateIncomingBall(spinning); }, {"w_x", "2000000", "at most 1000000"});
+  // Regression (found by fuzzing): v_y = 5e-324 m/s stalled the exact solver (zero first step).
+  BallVelocity creeping = ball;
+  creeping.v.y() = std::numeric_limits<double>::denorm_min();
+  expectRejected([creeping] { validateIncomingBall(creeping); }, {"v_y", "at least 1e-100"});
 }
 
 }  // namespace

@@ -1,9 +1,8 @@
 // Shared pieces of the cushion impact tests: a seeded generator of random impacts, a metric for the
-// difference of two ball states, the mirror map, rebound speed and angle, and a guard that turns
-// floating-point exceptions into crashes while physics runs.
+// difference of two ball states, the mirror map, rebound speed and angle (and, through
+// fp_trap_support.h, the guard that turns floating-point exceptions into crashes while physics
+// runs).
 #pragma once
-
-#include <fenv.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +13,7 @@
 
 #include "physics/cushion_model.h"
 #include "physics/cushion_paper_solver.h"
+#include "tests/physics/fp_trap_support.h"  // FloatingPointTraps, used with the impacts
 
 namespace baize::physics::test {
 
@@ -132,26 +132,5 @@ inline BallVelocity paperSchemeWithLocatedStops(const CushionParams& params, con
   end.w = c.ball.w + at_target * (d.ball.w - c.ball.w);
   return end;
 }
-
-// While alive, an invalid operation, a division by zero or an overflow raises SIGFPE, so a path
-// that would quietly produce NaN or infinity crashes the test instead. Restores the previous trap
-// set and clears the flags on exit. Keep it around physics calls only (not around test macros).
-class FloatingPointTraps {
- public:
-  FloatingPointTraps() : previous_(fegetexcept()) {
-    feclearexcept(FE_ALL_EXCEPT);
-    feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
-  }
-  ~FloatingPointTraps() {
-    fedisableexcept(FE_ALL_EXCEPT);
-    feclearexcept(FE_ALL_EXCEPT);
-    if (previous_ > 0) feenableexcept(previous_);
-  }
-  FloatingPointTraps(const FloatingPointTraps&) = delete;
-  FloatingPointTraps& operator=(const FloatingPointTraps&) = delete;
-
- private:
-  int previous_;
-};
 
 }  // namespace baize::physics::test

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/physics/fp_trap_support.h"
 #include "tests/physics/rejection_test_support.h"
 
 namespace baize::physics {
@@ -428,6 +429,101 @@ TEST(PolynomialRootsTest, BadInputIsRejected) {
   expectRejected([&] { firstClosingRoot({1, 1, 0, 0, 0}, 0, kInfinity); }, "t_hi = inf");
   expectRejected([&] { rootsInInterval({1, 1, 0, 0, 0}, nan, 1); }, "t_lo = nan");
   expectRejected([&] { smallestRootInInterval({1, 1, 0, 0, 0}, 0, 1e39); }, "t_hi = 9.99");
+}
+
+// ---- Floating-point exceptions ------------------------------------------------------------------
+
+// p times the exact power of two that brings its largest coefficient below 1 (what the finders do
+// themselves): evaluating it cannot overflow anywhere in [-kMaxIntervalMagnitude,
+// kMaxIntervalMagnitude], so a root can be checked even where the given coefficients would
+// overflow.
+Coefficients normalizedByAPowerOfTwo(Coefficients c) {
+  double largest = 0;
+  for (double x : c) largest = std::max(largest, std::abs(x));
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  for (double& x : c) x = std::ldexp(x, -exponent);
+  return c;
+}
+
+// A reported root is genuine: p lies within its rounding band there, or changes sign across it
+// within kRootCheckUlps ulps either side (Newton stops when its step is down to ulps).
+constexpr int kRootCheckUlps = 4;
+bool isWithinRounding(const Coefficients& c, double t) {
+  const Coefficients p = normalizedByAPowerOfTwo(c);
+  auto sign = [&](double x) {
+    const PolynomialValue v = evaluatePolynomialWithErrorBound(p, x);
+    return std::abs(v.value) <= v.error_bound ? 0 : (v.value > 0 ? 1 : -1);
+  };
+  double below = t, above = t;
+  for (int i = 0; i < kRootCheckUlps; ++i) {
+    below = std::nextafter(below, -kInfinity);
+    above = std::nextafter(above, kInfinity);
+  }
+  return sign(t) == 0 || sign(below) == 0 || sign(above) == 0 || sign(below) != sign(above);
+}
+
+// Every finder on the hard cases of this file and a few more extreme ones (subnormal and huge
+// coefficients, ends at the interval limit, roots beyond 2^128) with invalid operations, division
+// by zero and overflow trapped: no path may produce a NaN or an infinity on the way to an answer.
+// The answers are then checked: roots in the interval, within rounding, as many as expected.
+TEST(PolynomialRootsTest, HardCasesRaiseNoFloatingPointException) {
+  constexpr double kSubnormal = std::numeric_limits<double>::denorm_min();
+  constexpr double kLimit = kMaxIntervalMagnitude;
+  struct Case {
+    const char* name;
+    Coefficients c;
+    double lo, hi;
+    int roots_in_interval;  // distinct roots rootsInInterval must report
+  };
+  const Case cases[] = {
+      {"double root (t-1)^2 (t-2)(t-3)", {6, -17, 17, -7, 1}, 0, 5, 3},
+      {"two double roots (t-1)^2 (t-3)^2", {9, -24, 22, -8, 1}, 0, 4, 2},
+      {"triple root (t-2)^3 (t+1)", {-8, 4, 6, -5, 1}, -2, 4, 2},
+      {"quadruple root (t-1)^4", {1, -4, 6, -4, 1}, 0, 2, 1},
+      {"nearly double root, dip 1e-14", {1 - 1e-14, -2, 1, 0, 0}, 0, 2, 2},
+      {"grazing within rounding", {1 + 0x1p-52, -2, 1, 0, 0}, 0, 2, 1},
+      {"vanishing leading coefficient (subnormal)", {-2.25, 6.75, -5, 1, kSubnormal}, 0, 10, 3},
+      {"subnormal coefficients only", {-kSubnormal, 2 * kSubnormal, 0, 0, 0}, 0, 1, 1},
+      // 1e308 (t - 1)(t + 1)(t - 0.5): near the largest double.
+      {"huge coefficients", {0.5e308, -1e308, -0.5e308, 1e308, 0}, -2, 2, 3},
+      // Roots 1e-150 and 1e150; the second lies beyond the interval's limit.
+      {"huge and tiny mixed", {1, -1e150, 1, 0, 0}, 0, 1e38, 1},
+      {"interval at the magnitude limit", {-1, 0, 1, 0, 0}, -kLimit, kLimit, 2},
+      {"quartic at the magnitude limit", {1, 0, 0, 0, 1e300}, -kLimit, kLimit, 0},
+      {"tiny leading coefficient, root near -2e300", {-1, 2, 1e-300, 0, 0}, 0, 1, 1},
+      {"an instant at a double root", {1, -2, 1, 0, 0}, 1, 1, 1},
+      {"constant", {3, 0, 0, 0, 0}, -5, 5, 0},
+  };
+  for (const Case& k : cases) {
+    SCOPED_TRACE(k.name);
+    std::vector<double> all, in_interval;
+    RootSearchResult smallest, closing;
+    {
+      test::FloatingPointTraps traps;
+      all = realRoots(k.c);
+      in_interval = rootsInInterval(k.c, k.lo, k.hi);
+      smallest = smallestRootInInterval(k.c, k.lo, k.hi);
+      closing = firstClosingRoot(k.c, k.lo, k.hi);
+    }
+    EXPECT_EQ(static_cast<int>(in_interval.size()), k.roots_in_interval);
+    for (double r : in_interval) {
+      EXPECT_TRUE(r >= k.lo && r <= k.hi && isWithinRounding(k.c, r)) << "root " << r;
+    }
+    for (double r : all) {
+      EXPECT_TRUE(std::isfinite(r)) << r;
+      if (std::abs(r) <= kLimit) {
+        EXPECT_TRUE(isWithinRounding(k.c, r)) << "root " << r;
+      }
+    }
+    EXPECT_EQ(isRoot(smallest), !in_interval.empty());
+    if (isRoot(smallest)) {
+      EXPECT_EQ(smallest.time, in_interval.front());
+    }
+    if (isRoot(closing)) {
+      EXPECT_TRUE(closing.time >= k.lo && closing.time <= k.hi) << closing.time;
+    }
+  }
 }
 
 // ---- The error bound
