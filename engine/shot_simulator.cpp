@@ -280,8 +280,10 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
     }
     for (std::size_t k = 0; k < table.jaws.size(); ++k) {
       const JawArc& jaw = table.jaws[k];
+      const double reach = jaw.radius_m + R - kContactSlack_m;
+      if ((balls[i].position - jaw.centre_m).squaredNorm() >= reach * reach) continue;
       const double distance = (balls[i].position - jaw.centre_m).norm();
-      if (distance < jaw.radius_m + R - kContactSlack_m && onJawArc(jaw, balls[i].position)) {
+      if (distance < reach && onJawArc(jaw, balls[i].position)) {
         physics::rejectValue(who(i) + " is inside jaw " + std::to_string(k) +
                                  ": its centre's distance from the jaw's centre (m)",
                              distance, "it must be at least the jaw's radius plus the ball's");
@@ -750,9 +752,10 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   for (int i = 0; i < n; ++i) {
     result.final_balls[i].pocketed = balls[i].pocketed;
     result.final_balls[i].pocket = balls[i].pocket;
-    result.final_balls[i].state = balls[i].pocketed
-                                      ? balls[i].state
-                                      : physics::advanceWithinState(p.cloth, balls[i].state, 0);
+    const BallState& b = balls[i].state;
+    const bool exactly_at_rest = b.velocity.isZero(0) && b.angular_velocity.isZero(0);
+    result.final_balls[i].state =
+        balls[i].pocketed || exactly_at_rest ? b : physics::advanceWithinState(p.cloth, b, 0);
   }
   result.end_time_s = now;
   return result;
