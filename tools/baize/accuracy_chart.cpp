@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tools/baize/csv_table.h"
+#include "tools/baize/labelled_series.h"
 
 namespace baize::tools {
 namespace {
@@ -56,11 +57,7 @@ render::LineChart benchAccuracyChart(const std::string& csv_path) {
   chart.x_scale = render::AxisScale::Log;
   chart.y_scale = render::AxisScale::Log;
   chart.legend = render::LegendPlacement::OutsideRight;
-  struct LabelledPoint {
-    render::ChartPoint point;
-    std::string label;
-  };
-  std::vector<std::pair<std::string, std::vector<LabelledPoint>>> engines;  // in table order
+  LabelledGroups engines;  // in table order
   bool floor_labelled = false;
   for (size_t row = 0; row < table.rowCount(); ++row) {
     // One series per engine and subset of shots ("all" needs no mention).
@@ -81,17 +78,8 @@ render::LineChart benchAccuracyChart(const std::string& csv_path) {
     }
     found->second.push_back({{table.number(row, time), e > 0 ? e : floor_m}, label});
   }
-  for (auto& [name, points] : engines) {
-    // Joined in order of run time, so the line reads as the engine's cost-accuracy curve.
-    std::stable_sort(points.begin(), points.end(),
-                     [](const auto& a, const auto& b) { return a.point.x < b.point.x; });
-    render::ChartSeries series{name, {}, render::SeriesStyle::LineAndMarkers, {}};
-    for (const LabelledPoint& p : points) {
-      series.points.push_back(p.point);
-      series.point_labels.push_back(p.label);
-    }
-    chart.series.push_back(series);
-  }
+  for (render::ChartSeries& series : seriesSortedByX(std::move(engines)))
+    chart.series.push_back(std::move(series));
   return chart;
 }
 

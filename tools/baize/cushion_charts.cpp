@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "tools/baize/csv_table.h"
+#include "tools/baize/labelled_series.h"
 
 namespace baize::tools {
 namespace {
@@ -136,11 +137,7 @@ render::LineChart cushionBenchChart(const std::string& csv_path) {
   chart.x_scale = render::AxisScale::Log;
   chart.y_scale = render::AxisScale::Log;
   chart.legend = render::LegendPlacement::TopRight;
-  struct LabelledPoint {
-    render::ChartPoint point;
-    std::string label;
-  };
-  std::vector<std::pair<std::string, std::vector<LabelledPoint>>> solvers;  // in table order
+  LabelledGroups solvers;  // in table order
   for (size_t row = 0; row < table.rowCount(); ++row) {
     const std::string& name = table.text(row, solver);
     auto found = std::find_if(solvers.begin(), solvers.end(),
@@ -152,17 +149,8 @@ render::LineChart cushionBenchChart(const std::string& csv_path) {
   if (solvers.empty()) {
     throw std::invalid_argument(csv_path + ": no data rows: it must hold the bench's table");
   }
-  for (auto& [name, points] : solvers) {
-    // Joined in order of error, so the line reads as the solver's trade-off curve.
-    std::stable_sort(points.begin(), points.end(),
-                     [](const auto& a, const auto& b) { return a.point.x < b.point.x; });
-    render::ChartSeries series{name, {}, render::SeriesStyle::LineAndMarkers, {}};
-    for (const LabelledPoint& p : points) {
-      series.points.push_back(p.point);
-      series.point_labels.push_back(p.label);
-    }
-    chart.series.push_back(series);
-  }
+  for (render::ChartSeries& series : seriesSortedByX(std::move(solvers)))
+    chart.series.push_back(std::move(series));
   return chart;
 }
 
