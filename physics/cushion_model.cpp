@@ -27,10 +27,12 @@ void validateCushionParams(const CushionParams& p) {
                 "it must lie in [" + valueText(kMinBallRadius_m) + ", " +
                     valueText(kMaxBallRadius_m) + "]");
   }
-  if (!(p.contact_height_m > p.radius_m && p.contact_height_m < 2 * p.radius_m)) {
+  const double highest_m = p.radius_m * (1 + kMaxNoseSinTheta);
+  if (!(p.contact_height_m > p.radius_m && p.contact_height_m <= highest_m)) {
     rejectValue("cushion contact height h (m)", p.contact_height_m,
-                "it must lie strictly between R = " + valueText(p.radius_m) + " and 2R = " +
-                    valueText(2 * p.radius_m) + " (the nose touches the upper half of the ball)");
+                "it must lie above R = " + valueText(p.radius_m) +
+                    " and at most R (1 + sin 80 deg) = " + valueText(highest_m) +
+                    " (the nose touches the upper half of the ball, below its top)");
   }
   if (!(p.restitution > 0 && p.restitution <= 1)) {
     rejectValue("cushion restitution e_e", p.restitution, "it must lie in (0, 1]");

@@ -34,6 +34,11 @@ struct CushionParams {
 // their step budgets. Three decades either side of real balls leave every physical use open.
 inline constexpr double kMinBallRadius_m = 1e-3;
 inline constexpr double kMaxBallRadius_m = 1.0;
+// The steepest cushion nose accepted: sin theta = h/R - 1 at most sin 80 deg. Near 90 deg the nose
+// sits on top of the ball, the normal impulse is almost vertical and barely compresses the contact,
+// and the solvers' step counts grow like 1/cos theta without bound (found by fuzzing: the paper
+// scheme at h = 1.99999 R). Real cushions sit near 15-25 deg.
+inline constexpr double kMaxNoseSinTheta = 0.98480775301220806;  // sin(80 deg)
 // The ball masses they accept, kg: cue-sport balls weigh 0.1 to 0.3 kg; subnormal masses (found by
 // fuzzing: 1e-309 kg) stalled the ball-ball integration the same way.
 inline constexpr double kMinBallMass_kg = 1e-3;

@@ -365,7 +365,7 @@ TEST(ScenePhysics, BadOverridesAreRefusedNamingFileKeyAndValue) {
        {"test.json: physics.cushion: ", "mu_w = 0.5", "tan(theta)"}},
       {{{"cushion", {{"restitution", 0}}}}, {"test.json: physics.cushion: ", "e_e = 0", "(0, 1]"}},
       {{{"cushion", {{"contact_height_m", 0.01}}}},
-       {"test.json: physics.cushion: ", "h (m) = 0.01", "strictly between"}},
+       {"test.json: physics.cushion: ", "h (m) = 0.01", "it must lie above R = 0.028575"}},
       {{{"cushion", {{"tolerance", 0.5}}}},
        {"test.json: physics.cushion: ", "exact solver tolerance = 0.5", "[1e-14, 0.01]"}},
       {{{"ball_ball", {{"model", "newton"}}}},

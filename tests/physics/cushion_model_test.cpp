@@ -311,9 +311,14 @@ TEST(CushionModelValidation, RejectsNonPhysicalMassRadiusAndContactHeight) {
   // budget (std::logic_error); radii outside [1 mm, 1 m] are refused with the range.
   expectRejected(with([](CushionParams& p) { p.radius_m = 1e300; }), {"radius", "1e+300", "1]"});
   expectRejected(with([](CushionParams& p) { p.radius_m = 1e-200; }), {"radius", "0.001"});
-  // h must lie strictly inside (R, 2R) = (0.03125, 0.0625).
+  // h must lie in (R, R (1 + sin 80 deg)] = (0.03125, 0.06202...]: the nose below the ball's top.
   expectRejected(with([](CushionParams& p) { p.contact_height_m = 0.03125; }),
-                 {"contact height", "0.03125", "0.0625"});
+                 {"contact height", "0.03125", "sin 80 deg) = 0.06202"});
+  // Regression (found by fuzzing): at h = 1.99999 R the paper scheme exhausted its increments.
+  expectRejected(with([](CushionParams& p) { p.contact_height_m = 1.99999 * 0.03125; }),
+                 {"contact height", "0.0624996"});
+  expectRejected(with([](CushionParams& p) { p.contact_height_m = 0.0621; }),
+                 {"contact height", "0.0621"});
   expectRejected(with([](CushionParams& p) { p.contact_height_m = 0.0625; }),
                  {"contact height", "= 0.0625"});
   expectRejected(with([](CushionParams& p) { p.contact_height_m = 0.015625; }),
@@ -422,7 +427,8 @@ TEST(CushionModelValidation, RejectsSpeedsAndSpinsBeyondTheBounds) {
   expectRejected([fast] { validateIncomingBall(fast); }, {"v_y", "at most 1000"});
   BallVelocity spinning = ball;
   spinning.w.x() = 2 * kMaxBallSpin_radps;
-  expectRejected([spinning] { validateIncomingBall(spinning); }, {"w_x", "2000000", "at most 1000000"});
+  expectRejected([spinning] { validateIncomingBall(spinning); },
+                 {"w_x", "2000000", "at most 1000000"});
   // Regression (found by fuzzing): v_y = 5e-324 m/s stalled the exact solver (zero first step).
   BallVelocity creeping = ball;
   creeping.v.y() = std::numeric_limits<double>::denorm_min();
