@@ -10,15 +10,12 @@
 #include <stdexcept>
 
 #include "engine/ball_set.h"
+#include "tests/fuzz/fuzz_json.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(data, data + size);
-  } catch (const nlohmann::json::exception&) {
-    return 0;  // not JSON: the file loader turns this into std::invalid_argument
-  }
+  if (!baize::fuzz::parseJson(data, size, &document)) return 0;
   baize::engine::BallSet set;
   try {
     set = baize::engine::ballSetFromJson(document, "fuzz-balls.json");

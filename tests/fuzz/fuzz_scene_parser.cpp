@@ -12,6 +12,7 @@
 #include <string>
 
 #include "engine/scene.h"
+#include "tests/fuzz/fuzz_json.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {
@@ -32,11 +33,7 @@ constexpr double kEnergyFloor_Jpkg = 1e-15;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace baize;
   nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(data, data + size);
-  } catch (const nlohmann::json::exception&) {
-    return 0;  // not JSON: loadScene turns this into std::invalid_argument
-  }
+  if (!baize::fuzz::parseJson(data, size, &document)) return 0;
   engine::Scene scene;
   engine::SimulationParams params;
   physics::CueStrikeParams cue;

@@ -9,6 +9,7 @@
 
 #include "engine/shot_simulator.h"
 #include "engine/table.h"
+#include "tests/fuzz/fuzz_json.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {
@@ -26,11 +27,7 @@ void checkFinite(const Eigen::Vector2d& p, const char* what) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(data, data + size);
-  } catch (const nlohmann::json::exception&) {
-    return 0;  // not JSON: the file loader turns this into std::invalid_argument
-  }
+  if (!baize::fuzz::parseJson(data, size, &document)) return 0;
   baize::engine::Table table;
   try {
     table = baize::engine::tableFromJson(document, "fuzz-table.json");
