@@ -446,13 +446,16 @@ void validateBallBallParams(const BallBallParams& p) {
                 "it must lie in [" + valueText(kMinBallRadius_m) + ", " +
                     valueText(kMaxBallRadius_m) + "]");
   }
-  const std::string mass_rule =
-      "it must lie in [" + valueText(kMinBallMass_kg) + ", " + valueText(kMaxBallMass_kg) + "]";
+  // Rules are worded only when a value breaks them: this runs before every impact.
+  auto mass_rule = [] {
+    return "it must lie in [" + valueText(kMinBallMass_kg) + ", " + valueText(kMaxBallMass_kg) +
+           "]";
+  };
   if (!(p.mass1_kg >= kMinBallMass_kg && p.mass1_kg <= kMaxBallMass_kg)) {
-    rejectValue("ball 1 mass (kg)", p.mass1_kg, mass_rule);
+    rejectValue("ball 1 mass (kg)", p.mass1_kg, mass_rule());
   }
   if (!(p.mass2_kg >= kMinBallMass_kg && p.mass2_kg <= kMaxBallMass_kg)) {
-    rejectValue("ball 2 mass (kg)", p.mass2_kg, mass_rule);
+    rejectValue("ball 2 mass (kg)", p.mass2_kg, mass_rule());
   }
   if (!(p.restitution >= 0 && p.restitution <= 1)) {
     rejectValue("ball-ball restitution e", p.restitution, "it must lie in [0, 1]");
@@ -527,22 +530,25 @@ void validateBallBallContact(const BallVelocity& ball1, const BallVelocity& ball
   const char* axes[] = {"x", "y", "z"};
   // Speeds and spins within the bounds of cushion_model.h (found by fuzzing: |v| = 1e306 m/s ran
   // the Euler scheme out of its increments).
-  const std::string speed_rule =
-      "it must be a finite number of magnitude at most " + valueText(kMaxBallSpeed_mps);
-  const std::string spin_rule =
-      "it must be a finite number of magnitude at most " + valueText(kMaxBallSpin_radps);
+  // Worded only when a value breaks them: this runs before every impact.
+  auto speed_rule = [] {
+    return "it must be a finite number of magnitude at most " + valueText(kMaxBallSpeed_mps);
+  };
+  auto spin_rule = [] {
+    return "it must be a finite number of magnitude at most " + valueText(kMaxBallSpin_radps);
+  };
   for (int i = 0; i < 3; ++i) {
     if (!(std::abs(ball1.v[i]) <= kMaxBallSpeed_mps)) {
-      rejectValue(std::string("ball 1 v_") + axes[i] + " (m/s)", ball1.v[i], speed_rule);
+      rejectValue(std::string("ball 1 v_") + axes[i] + " (m/s)", ball1.v[i], speed_rule());
     }
     if (!(std::abs(ball1.w[i]) <= kMaxBallSpin_radps)) {
-      rejectValue(std::string("ball 1 w_") + axes[i] + " (rad/s)", ball1.w[i], spin_rule);
+      rejectValue(std::string("ball 1 w_") + axes[i] + " (rad/s)", ball1.w[i], spin_rule());
     }
     if (!(std::abs(ball2.v[i]) <= kMaxBallSpeed_mps)) {
-      rejectValue(std::string("ball 2 v_") + axes[i] + " (m/s)", ball2.v[i], speed_rule);
+      rejectValue(std::string("ball 2 v_") + axes[i] + " (m/s)", ball2.v[i], speed_rule());
     }
     if (!(std::abs(ball2.w[i]) <= kMaxBallSpin_radps)) {
-      rejectValue(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i], spin_rule);
+      rejectValue(std::string("ball 2 w_") + axes[i] + " (rad/s)", ball2.w[i], spin_rule());
     }
     if (!std::isfinite(n[i])) {
       rejectValue(std::string("line of centres n_") + axes[i], n[i], "it must be a finite number");
