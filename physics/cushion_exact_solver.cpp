@@ -52,6 +52,18 @@ enum : int { kP = 0, kAx = 1, kAy = 2, kBx = 3, kBy = 4, kWork = 5 };
 // own slip sets the pace (its direction turns over impulses of about M |u| / mu). A held contact
 // whose slip grows to it slips on as an ordinary slipping contact.
 constexpr double kRegularizingSlipFraction = 1e-3;
+// A slipping contact whose slip shrinks along its own line runs in P (its factor in sigma is 1)
+// while its slip rate turns the slip by at most this share of the rate that shrinks it (rad of
+// turn over the rest of its approach to zero, at the present rate). Friction then keeps its
+// direction, the slip falls linearly in P, and a few steps in P reach its zero, where in tau (the
+// slip's own factor) the same fall is an exponential decay whose direction mode is stiff: about
+// a quarter of an e-fold per step, over the fifteen e-folds from the regularizing slip to the
+// vanishing threshold.
+constexpr double kApproachEntry = 0.25;
+// The zero an approaching slip runs to is located where it is this multiple of the vanishing
+// threshold, to within the looseness (so that it has vanished when located).
+constexpr double kApproachLanding = 0.5;
+constexpr double kApproachLooseness = 0.25;
 // A slip below this fraction of (tolerance x velocity scale) has vanished. It must lie above what
 // the integration resolves of a slip (impulse errors of tolerance x M V reach the slips through the
 // contact matrix, whose entries are up to 7/2, as about 3.5 tolerance x V), and taking it as zero
@@ -131,10 +143,13 @@ constexpr double kAffineCheckRelative = 1e-12;
 constexpr double kAffineRootRelative = 1e-9;
 // Samples on the circle when searching for the direction a contact slips off in from rest.
 constexpr int kDirectionSamples = 72;
-// The tolerances accepted: below 1e-14 the slips are not resolved in double precision; above 1e-2
-// the events are not located meaningfully.
+// The tolerances accepted: below 1e-14 the slips are not resolved in double precision. Above 1e-6
+// the vanishing threshold (kVanishedSlipFraction x tolerance x velocity scale) comes within two
+// decades of the regularizing slip (kRegularizingSlipFraction), below which slips are resolved:
+// at 1e-4 the two meet, contacts are held and released on every step, and a sixth of random
+// impacts (rolling balls with sidespin) ran out of steps or contact changes.
 constexpr double kMinTolerance = 1e-14;
-constexpr double kMaxTolerance = 1e-2;
+constexpr double kMaxTolerance = 1e-6;
 // Logic guards, far above what the bounded equations need (an impact takes tens of steps and a few
 // contact changes).
 constexpr int kMaxSteps = 100000;
@@ -200,16 +215,40 @@ constexpr double er1 = 0.1312004499419488073250102996e-1, er6 = -0.1225156446376
 constexpr double kThirdOrderWeight = 0.01;
 }  // namespace dp853
 
+// At most `capacity` items without allocating: the step loop's events and the ones a step crossed
+// (the phase end, and two for each held contact), built on every step.
+template <typename T, int capacity>
+class FixedList {
+ public:
+  void push_back(const T& item) {
+    if (count_ == capacity) throw std::logic_error("exact cushion solver: fixed list overflow");
+    items_[count_++] = item;
+  }
+  int size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  const T& operator[](int i) const { return items_[i]; }
+  const T* begin() const { return items_.data(); }
+  const T* end() const { return items_.data() + count_; }
+
+ private:
+  std::array<T, capacity> items_{};
+  int count_ = 0;
+};
+constexpr int kMaxStepEvents = 9;
+
 double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
   return p.x() * q.y() - p.y() * q.x();
 }
+
+// x^(1/8) as three square roots: a tenth of the cost of std::pow, called once or twice a step.
+static_assert(kErrorOrder == 8, "eighthRoot stands for the power 1 / kErrorOrder");
+double eighthRoot(double x) { return std::sqrt(std::sqrt(std::sqrt(x))); }
 
 double stepFactor(double error) {
   if (!(error > 0)) return kStepMaxFactor;
   // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
   // the share leaves that order (above the floor it is one lower, which the safety factor covers).
-  return std::clamp(kStepSafety * std::pow(error, -1.0 / kErrorOrder), kStepMinFactor,
-                    kStepMaxFactor);
+  return std::clamp(kStepSafety / eighthRoot(error), kStepMinFactor, kStepMaxFactor);
 }
 
 // The root in (0, 1) of the cubic with values g0 > 0 and g1 <= 0 and slopes d0, d1 at 0 and 1
@@ -240,6 +279,10 @@ struct ContactState {
       Eigen::Vector2d::UnitX();                      // slip direction for a slip of exactly zero
   Eigen::Vector2d creep = Eigen::Vector2d::UnitX();  // held: where to start looking for phi*
   int small_slip_steps = 0;  // consecutive accepted steps with a slip below kStagnantSlipMultiple
+  // Slipping and approaching zero along its line: runs in P (see kApproachTurn).
+  bool approaching = false;
+  bool approach_blocked = false;  // left its line: not again until its mode changes
+  Eigen::Vector2d approach_direction = Eigen::Vector2d::UnitX();  // its slip's line when it began
 };
 
 struct Friction {
@@ -294,6 +337,8 @@ class ExactImpact {
   bool held(int k) const {
     return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Stick;
   }
+  // Whether slipping contact k's factor |u| / (|u| + s0) is in sigma (not while it approaches).
+  bool regularized(int k) const { return slipping(k) && !contacts_[k].approaching; }
 
   // The contact matrix (see the top of the file) times (a_x, a_y, b_x, b_y); half its entries are
   // 0.
@@ -360,11 +405,31 @@ class ExactImpact {
     return 1 - f.b.norm() / (mu_[1] * (s_ + c_ * f.a.y()));
   }
 
+  // phi* of the cloth contact while the cushion contact slides (or is frictionless), in closed
+  // form: the cushion's friction a then does not depend on the cloth's direction d, and the cloth's
+  // own friction mu_s q d (q = s + c a_y) enters its slip rate isotropically, du_C/dP = r0 - k d
+  // with k = 7/2 mu_s q / M. So phi* = r0 / |r0|, along which the slip grows at |r0| - k (the cone
+  // cannot hold the contact exactly when |r0| > k). This is the held contact of every rolling or
+  // nearly rolling ball, the common case. Returns false when it does not apply.
+  bool clothCreepDirection(int k, Laws laws, Eigen::Vector2d* result) const {
+    if (k != 1 || laws.stick[0]) return false;
+    laws.stick[1] = false;
+    laws.direction[1] = Eigen::Vector2d::Zero();
+    const Friction f = frictionFor(laws);
+    const Eigen::Vector2d r0 = slipRate(1, f);
+    const double own = 3.5 * mu_[1] * (s_ + c_ * f.a.y()) / M_;
+    const double size = r0.norm();
+    if (!(size > own)) return false;
+    *result = r0 / size;
+    return true;
+  }
+
   // The direction phi* a held contact k slides along when its cone cannot hold it: the slip it then
   // makes grows along phi* (cross(phi*, du_k/dP) = 0 with du_k/dP . phi* > 0). Newton on the angle
   // from `guess`; returns false if that does not converge to such a direction.
   bool creepDirection(int k, Laws laws, const Eigen::Vector2d& guess,
                       Eigen::Vector2d* result) const {
+    if (clothCreepDirection(k, laws, result)) return true;
     laws.stick[k] = false;
     auto turn = [&](double phi, double* growth) {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
@@ -436,7 +501,8 @@ class ExactImpact {
   // which the slip grows along itself, the one where it grows fastest.
   Eigen::Vector2d creepDirectionSearch(int k, Laws laws) const {
     laws.stick[k] = false;
-    Eigen::Vector2d solved = Eigen::Vector2d::Zero();  // set whenever the affine solve succeeds
+    Eigen::Vector2d solved = Eigen::Vector2d::Zero();  // set whenever a closed form applies
+    if (clothCreepDirection(k, laws, &solved)) return solved;
     if (creepDirectionAffine(k, laws, &solved)) return solved;
     auto rateAlong = [&](double phi) {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
@@ -470,6 +536,25 @@ class ExactImpact {
     return r.norm() > 0 ? Eigen::Vector2d(r.normalized()) : Eigen::Vector2d::UnitX();
   }
 
+  // lawsAt's most common case written out (a rolling ball's cloth contact, held while the cushion
+  // contact slides or is frictionless): the stick friction the cloth would need is M r0 / (7/2) and
+  // its cone is mu_s q, so it sticks while |r0| <= k and otherwise slides along phi* = r0 / |r0|
+  // (see clothCreepDirection). False (laws untouched) within rounding of the cone's edge, which
+  // the general path settles.
+  bool clothHeldLaws(Laws* laws) const {
+    const Eigen::Vector2d a = contacts_[0].frictionless
+                                  ? Eigen::Vector2d::Zero()
+                                  : Eigen::Vector2d(mu_[0] * laws->direction[0]);
+    const Eigen::Vector2d r0(-coupling_x_ * a.x() / M_, -(c_ + coupling_y_ * a.y()) / M_);
+    const double own = 3.5 * mu_[1] * (s_ + c_ * a.y()) / M_;
+    const double size = r0.norm();
+    if (1 - size / own >= kConeSlackRelative) return true;  // the cone holds it: it sticks
+    if (!(size > own)) return false;
+    laws->stick[1] = false;
+    laws->direction[1] = r0 / size;
+    return true;
+  }
+
   // The laws in force at slips u: slipping contacts slide along their slips; held contacts stick if
   // their cones can hold them and otherwise slide along phi* (found from their `creep` guesses).
   Laws lawsAt(const std::array<Eigen::Vector2d, 2>& u, std::array<double, 2>* speed) const {
@@ -478,9 +563,12 @@ class ExactImpact {
       const double size = u[k].norm();
       if (speed) (*speed)[k] = size;
       laws.stick[k] = held(k);
-      laws.direction[k] = size > 0 ? Eigen::Vector2d(u[k] / size) : contacts_[k].direction;
+      laws.direction[k] = contacts_[k].approaching ? contacts_[k].approach_direction
+                          : size > 0               ? Eigen::Vector2d(u[k] / size)
+                                                   : contacts_[k].direction;
     }
     if (!held(0) && !held(1)) return laws;
+    if (held(1) && !held(0) && clothHeldLaws(&laws)) return laws;
     for (int round = 0; round < 2; ++round) {
       const Friction f = frictionFor(laws);
       bool changed = false;
@@ -506,7 +594,7 @@ class ExactImpact {
     const Friction f = frictionFor(laws);
     double sigma = 1;  // dP/dtau
     for (int k = 0; k < 2; ++k) {
-      if (slipping(k)) sigma *= speed[k] / (speed[k] + regularizing_slip_);
+      if (regularized(k)) sigma *= speed[k] / (speed[k] + regularizing_slip_);
     }
     State r;
     r << 1, f.a.x(), f.a.y(), f.b.x(), f.b.y(), c_ * normalVelocity(z);
@@ -523,7 +611,10 @@ class ExactImpact {
       const double uy =
           slip0_[0].y() - (diagonal_y_ * ay + coupling_y_ * by - s_ * c_ * P) * inverse_mass_;
       const double speed = std::sqrt(ux * ux + uy * uy);
-      if (speed > 0) {
+      if (contacts_[0].approaching) {
+        fax = mu_[0] * contacts_[0].approach_direction.x();
+        fay = mu_[0] * contacts_[0].approach_direction.y();
+      } else if (speed > 0) {
         const double scale = mu_[0] / speed;
         fax = scale * ux;
         fay = scale * uy;
@@ -531,15 +622,20 @@ class ExactImpact {
         fax = mu_[0] * contacts_[0].direction.x();
         fay = mu_[0] * contacts_[0].direction.y();
       }
-      sigma_numerator *= speed;
-      sigma_denominator *= speed + regularizing_slip_;
+      if (!contacts_[0].approaching) {
+        sigma_numerator *= speed;
+        sigma_denominator *= speed + regularizing_slip_;
+      }
     }
     if (slipping(1)) {
       const double ux = slip0_[1].x() - (coupling_x_ * ax + 3.5 * bx) * inverse_mass_;
       const double uy = slip0_[1].y() - (c_ * P + coupling_y_ * ay + 3.5 * by) * inverse_mass_;
       const double speed = std::sqrt(ux * ux + uy * uy);
       const double limit = mu_[1] * (s_ + c_ * fay);
-      if (speed > 0) {
+      if (contacts_[1].approaching) {
+        fbx = limit * contacts_[1].approach_direction.x();
+        fby = limit * contacts_[1].approach_direction.y();
+      } else if (speed > 0) {
         const double scale = limit / speed;
         fbx = scale * ux;
         fby = scale * uy;
@@ -547,13 +643,20 @@ class ExactImpact {
         fbx = limit * contacts_[1].direction.x();
         fby = limit * contacts_[1].direction.y();
       }
-      sigma_numerator *= speed;
-      sigma_denominator *= speed + regularizing_slip_;
+      if (!contacts_[1].approaching) {
+        sigma_numerator *= speed;
+        sigma_denominator *= speed + regularizing_slip_;
+      }
     }
     const double sigma = sigma_numerator / sigma_denominator;
     const double vy = vy0_ - (c_ * P - s_ * ay + by) * inverse_mass_;
     State r;
-    r << sigma, sigma * fax, sigma * fay, sigma * fbx, sigma * fby, sigma * c_ * vy;
+    r[kP] = sigma;
+    r[kAx] = sigma * fax;
+    r[kAy] = sigma * fay;
+    r[kBx] = sigma * fbx;
+    r[kBy] = sigma * fby;
+    r[kWork] = sigma * c_ * vy;
     return r;
   }
 
@@ -623,13 +726,23 @@ class ExactImpact {
   // it (it starts to slide along phi*) and holds it again (the margin of its needed friction).
   struct Event {
     bool phase_end = true;
-    int contact = 0;  // for a held contact's events
-    double sign = 1;  // +1: its cone stops holding it; -1: its cone holds it again
+    int contact = 0;         // for a held contact's events
+    double sign = 1;         // +1: its cone stops holding it; -1: its cone holds it again
     bool creep_end = false;  // a held contact sliding along phi* has to slip as its own slip says
+    bool approach_end = false;  // an approaching slip has reached its zero (has vanished)
+    bool approach_off = false;  // an approaching slip has left its line: it slips as it says
   };
   double eventValue(const Event& event, const State& z) const {
     if (event.phase_end) return compressing_ ? normalVelocity(z) : z[kWork] - work_target_;
     if (event.creep_end) return creepRoom(event.contact, z);
+    if (event.approach_end) {
+      return contacts_[event.contact].approach_direction.dot(slip(event.contact, z)) -
+             kApproachLanding * vanished_slip_;
+    }
+    if (event.approach_off) {
+      return creep_error_limit_ -
+             std::abs(cross(contacts_[event.contact].approach_direction, slip(event.contact, z)));
+    }
     return event.sign * neededMargin(event.contact, z);
   }
   // How much more error the held law of contact k may make at z before its contact has to slip as
@@ -652,6 +765,8 @@ class ExactImpact {
   double eventTolerance(const Event& event) const {
     // The held law may end anywhere its error is of the order of its limit: located loosely.
     if (event.creep_end) return kCreepEndLooseness * creep_error_limit_;
+    if (event.approach_end) return kApproachLooseness * vanished_slip_;
+    if (event.approach_off) return kCreepEndLooseness * creep_error_limit_;
     if (!event.phase_end) return kEventResidualFraction * options_.tolerance;
     // The phase ends are measured against the normal motion itself (v_y0, and the compression
     // work), not the whole velocity scale: in a grazing impact v_y0 can lie below tolerance times
@@ -776,6 +891,8 @@ class ExactImpact {
     if (++changes_ > kMaxContactChanges)
       throw std::logic_error("cushion contacts changed state too often");
     contacts_[k].mode = mode;
+    contacts_[k].approaching = false;
+    contacts_[k].approach_blocked = false;
   }
 
   // Records the contacts' physical modes at z where they changed: a contact sticks while it is held
@@ -874,6 +991,54 @@ class ExactImpact {
     if (!(u[k].dot(phi) > 0) || std::abs(cross(u[k], phi)) >= kSteadyCreepHold * creep_error_limit_)
       return false;
     contacts_[k].creep = phi;
+    return true;
+  }
+
+  // Which slipping contacts approach zero along their line (see kApproachTurn), from the rate
+  // dz/dtau at z. When that changes, tau changes meaning: the rate is taken again and the next
+  // step h rescaled to cover the same impulse. Returns whether it changed.
+  // du/dtau of both contacts under the rate dz/dtau.
+  std::array<Eigen::Vector2d, 2> slipChanges(const State& r) const {
+    const Eigen::Vector4d response = contactResponse(r[kAx], r[kAy], r[kBx], r[kBy]);
+    return {Eigen::Vector2d(-response[0], -(response[1] - s_ * c_ * r[kP])) / M_,
+            Eigen::Vector2d(-response[2], -(response[3] + c_ * r[kP])) / M_};
+  }
+
+  // The step (tau) that takes approaching contact k's slip to where its zero is located, at the
+  // rate dz/dtau = k1: its slip falls linearly in P, so the step lands there (to rounding and the
+  // slow change of the other contact) and the event is due at the next step's start instead of
+  // being crossed, past which the slip's friction reverses. Infinite if it does not fall.
+  double approachStep(int k, const State& z, const State& k1) const {
+    const Eigen::Vector2d& line = contacts_[k].approach_direction;
+    const double fall = -line.dot(slipChanges(k1)[k]);
+    const double left = line.dot(slip(k, z)) - kApproachLanding * vanished_slip_;
+    if (!(fall > 0) || !(left > 0)) return std::numeric_limits<double>::infinity();
+    return left / fall;
+  }
+
+  bool updateApproaches(const State& z, State* rate_here, double* h) {
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
+    const State& r = *rate_here;
+    const std::array<Eigen::Vector2d, 2> change = slipChanges(r);  // du/dtau
+    bool changed = false;
+    for (int k = 0; k < 2; ++k) {
+      ContactState& contact = contacts_[k];
+      const double along = u[k].dot(change[k]), across = std::abs(cross(u[k], change[k]));
+      // It runs along its line to its zero only if the turn its rate gives it on the way keeps its
+      // slip within a share of the misalignment limit of that line (|u| across / -along is the
+      // slip that turn builds up off the line by the time it reaches zero).
+      const bool approaching = slipping(k) && !contact.approach_blocked && along < 0 &&
+                               u[k].norm() * across <= -kApproachEntry * creep_error_limit_ * along;
+      if (approaching == contact.approaching) continue;
+      contact.approaching = approaching;
+      if (approaching) contact.approach_direction = u[k].normalized();
+      changed = true;
+    }
+    if (!changed) return false;
+    const double before = r[kP];
+    *rate_here = rate(z);
+    if (before > 0 && (*rate_here)[kP] > 0) *h *= before / (*rate_here)[kP];
+    previous_error_ = 0;
     return true;
   }
 
@@ -1013,7 +1178,8 @@ CushionImpactResult ExactImpact::run() {
       k1 = rate(z);
       continue;
     }
-    std::vector<Event> events = {Event{}};
+    FixedList<Event, kMaxStepEvents> events;
+    events.push_back(Event{});
     for (int k = 0; k < 2; ++k) {
       if (!held(k)) continue;
       // Armed only clear of the cone's edge, so that an event just applied cannot fire again at
@@ -1028,16 +1194,27 @@ CushionImpactResult ExactImpact::run() {
         h = std::min(h, heldLawStep(k, z, k1));
       }
     }
+    for (int k = 0; k < 2; ++k) {
+      if (contacts_[k].approaching) {
+        Event approach{false, k, 1.0, false};
+        approach.approach_end = true;
+        events.push_back(approach);
+        Event off{false, k, 1.0, false};
+        off.approach_off = true;
+        events.push_back(off);
+        h = std::min(h, approachStep(k, z, k1));
+      }
+    }
     if (std::isfinite(release_step_cap_)) {  // in tau, at the pace the rate sets here
       h = std::min(h, release_step_cap_ / k1[kP]);
       release_step_cap_ = std::numeric_limits<double>::infinity();
     }
     const Step step = rungeKuttaStep(z, k1, h);
     // Events are judged before the error, which may be large only because of what lies beyond them.
-    // Every event the step crossed is located, and the step lands on the earliest: estimates from the
-    // step's ends could order them wrongly (a cone margin is far from linear in the step).
-    std::vector<int> crossed;
-    for (int i = 0; i < static_cast<int>(events.size()); ++i) {
+    // Every event the step crossed is located, and the step lands on the earliest: estimates from
+    // the step's ends could order them wrongly (a cone margin is far from linear in the step).
+    FixedList<int, kMaxStepEvents> crossed;
+    for (int i = 0; i < events.size(); ++i) {
       if (eventValue(events[i], step.z) <= 0) crossed.push_back(i);
     }
     if (crossed.empty()) {
@@ -1047,6 +1224,7 @@ CushionImpactResult ExactImpact::run() {
         k1 = step.rate_at_end;
         updateCreepGuesses(z);
         countSmallSlips(z);
+        updateApproaches(z, &k1, &h);
         reportModes(z);
         if (tracing) sample(z);
         // Predictive control (Gustafsson): where the accepted steps' errors follow a trend (a slip
@@ -1054,10 +1232,8 @@ CushionImpactResult ExactImpact::run() {
         // follows it too, instead of overshooting into a rejection every other step.
         double factor = stepFactor(step.error);
         if (previous_error_ > 0 && step.error > 0) {
-          const double trend =
-              (h / previous_step_) * std::pow(previous_error_ / step.error, 1.0 / kErrorOrder);
-          factor = std::min(
-              factor, std::clamp(stepFactor(step.error) * trend, kStepMinFactor, kStepMaxFactor));
+          const double trend = (h / previous_step_) * eighthRoot(previous_error_ / step.error);
+          factor = std::clamp(stepFactor(step.error) * trend, kStepMinFactor, kStepMaxFactor);
         }
         previous_step_ = h;
         previous_error_ = step.error;
@@ -1072,10 +1248,11 @@ CushionImpactResult ExactImpact::run() {
     Step landed;
     double length = std::numeric_limits<double>::infinity();
     bool retry = false;
+    const double step_length = h;  // of `step`, which every event is located in
     for (int i : crossed) {
       Step candidate;
       double candidate_length = 0;
-      if (!locate(events[i], z, k1, h, step, &candidate_length, &candidate)) {
+      if (!locate(events[i], z, k1, step_length, step, &candidate_length, &candidate)) {
         h = std::min(retry ? h : candidate_length, candidate_length);
         retry = true;
         continue;
@@ -1091,10 +1268,19 @@ CushionImpactResult ExactImpact::run() {
     z = landed.z;
     updateCreepGuesses(z);
     bool phase_ends = false;
-    for (int i = 0; i < static_cast<int>(events.size()); ++i) {
+    for (int i = 0; i < events.size(); ++i) {
       if (i != first && eventValue(events[i], z) > eventTolerance(events[i])) continue;
       if (events[i].phase_end) {
         phase_ends = true;
+        continue;
+      }
+      if (events[i].approach_end) {  // its slip has vanished (what is off its line is within
+        hold(events[i].contact, z);  // the misalignment limit, which holding it removes)
+        continue;
+      }
+      if (events[i].approach_off) {  // off its line: its friction follows its slip again
+        contacts_[events[i].contact].approaching = false;
+        contacts_[events[i].contact].approach_blocked = true;
         continue;
       }
       if (events[i].creep_end) {  // its held law has run its course: it slips as its slip says
@@ -1116,6 +1302,7 @@ CushionImpactResult ExactImpact::run() {
     reportModes(z);
     if (tracing && length > 0) sample(z);
     k1 = rate(z);
+    updateApproaches(z, &k1, &h);
     if (!phase_ends) continue;
     if (!compressing_) {
       result_.final_impulse_Ns = z[kP];

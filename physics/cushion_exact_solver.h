@@ -15,7 +15,7 @@ namespace baize::physics {
 
 struct ExactSolverOptions {
   // Error allowed, relative to the velocity scale |v| + R |w| (and the matching impulse and work
-  // scales), per share of the impact's impulse (error per unit step). Accepted: [1e-14, 1e-2]. The
+  // scales), per share of the impact's impulse (error per unit step). Accepted: [1e-14, 1e-6]. The
   // default keeps output velocities within 1e-9 V0 of the converged solution: over 16000 seeded
   // impacts (wide and rolling sets, snooker and pool cushions) the largest error was 8.0e-10 V0
   // (tests and `baize bench cushion` check it).
@@ -25,7 +25,7 @@ struct ExactSolverOptions {
   double trace_spacing_Ns = 0;
 };
 
-// Throws std::invalid_argument naming the value unless the tolerance lies in [1e-14, 1e-2] and the
+// Throws std::invalid_argument naming the value unless the tolerance lies in [1e-14, 1e-6] and the
 // trace spacing is finite and >= 0.
 void validateExactSolverOptions(const ExactSolverOptions& options);
 

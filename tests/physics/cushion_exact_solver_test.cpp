@@ -239,7 +239,7 @@ TEST(CushionExactSolver, ErrorShrinksWithTheTolerance) {
         solveExact(impacts.back().params, impacts.back().incoming, kConvergedTolerance).after);
   }
   double previous_worst = std::numeric_limits<double>::infinity();
-  for (double tolerance : {1e-5, 1e-7, 1e-9, 1e-11}) {
+  for (double tolerance : {1e-6, 1e-7, 1e-9, 1e-11}) {
     double worst = 0;
     for (std::size_t i = 0; i < impacts.size(); ++i) {
       const BallVelocity after =
@@ -250,6 +250,57 @@ TEST(CushionExactSolver, ErrorShrinksWithTheTolerance) {
     EXPECT_LE(worst, kGlobalOverLocalError * tolerance) << "tolerance " << tolerance;
     EXPECT_LT(worst, previous_worst) << "tolerance " << tolerance;
     previous_worst = worst;
+  }
+}
+
+// Exactly head-on, the nose slip falls to zero along one line (the rate that shrinks it has no
+// part across it) and the solver runs it to its zero in P with its friction along that line, where
+// in the regularized variable it would decay exponentially over thousands of evaluations. The
+// result must still be the converged one, and the symmetry of a ball without sidespin exact: it
+// leaves straight back, without sideways speed or spin about the cushion's normal axis.
+TEST(CushionExactSolver, HeadOnImpactsRunToTheirZeroSlipAccurately) {
+  constexpr double kSymmetryRelative = 1e-12;  // rounding: no sideways force appears at all
+  const CushionParams p;
+  const double V = 2.0;
+  for (double topspin : {-0.5, 0.0, 0.5, 1.0}) {
+    for (double sidespin : {0.0, 0.3, -0.3}) {
+      SCOPED_TRACE("topspin " + std::to_string(topspin) + " V/R, sidespin " +
+                   std::to_string(sidespin) + " V/R");
+      const BallVelocity in =
+          incomingBall(V, degrees(90), topspin * V / p.radius_m, sidespin * V / p.radius_m);
+      const BallVelocity out = solveExact(p, in).after;
+      const BallVelocity converged = solveExact(p, in, kConvergedTolerance).after;
+      EXPECT_LE(velocityDifference(out, converged, p.radius_m) / V, kSolverAccuracy);
+      EXPECT_LT(out.v.y(), 0);
+      if (sidespin == 0) {
+        EXPECT_LE(std::abs(out.v.x()) / V, kSymmetryRelative);
+        EXPECT_LE(p.radius_m * std::abs(out.w.y()) / V, kSymmetryRelative);
+        EXPECT_LE(p.radius_m * std::abs(out.w.z()) / V, kSymmetryRelative);
+      }
+    }
+  }
+}
+
+// Regression (found measuring the engine's impacts): up to 1e-2 was accepted, but from 1e-4 on the
+// vanishing threshold met the regularizing slip, and rolling balls with sidespin ran out of steps
+// or contact changes. Every rolling impact (the engine's commonest: cloth slip exactly zero) and
+// every random one solves at the loosest tolerance accepted, to within the global error bound.
+TEST(CushionExactSolver, RollingImpactsSolveAtTheLoosestTolerance) {
+  constexpr double kLoosestTolerance = 1e-6;
+  RandomImpacts random(kSeed + 17);
+  for (int i = 0; i < 200; ++i) {
+    test::RandomImpact impact = random.next(true);
+    if (i % 2 == 0) {  // rolling: topspin V/R, any sidespin
+      impact.incoming =
+          incomingBall(impact.speed_mps, impact.alpha_rad,
+                       impact.speed_mps / impact.params.radius_m, impact.sidespin_radps);
+    }
+    SCOPED_TRACE("impact " + std::to_string(i));
+    const BallVelocity loose = solveExact(impact.params, impact.incoming, kLoosestTolerance).after;
+    const BallVelocity converged =
+        solveExact(impact.params, impact.incoming, kConvergedTolerance).after;
+    EXPECT_LE(velocityDifference(loose, converged, impact.params.radius_m) / impact.speed_mps,
+              kGlobalOverLocalError * kLoosestTolerance);
   }
 }
 
@@ -459,7 +510,7 @@ TEST(CushionExactSolver, ExactlyZeroInitialSlipStaysNearTheConvergedSolution) {
 // the normal rate differs, but the ball always leaves) at every tolerance.
 TEST(CushionExactSolver, GrazingImpactsLeaveTheCushionAtEveryTolerance) {
   const CushionParams p;
-  for (double tolerance : {kConvergedTolerance, ExactSolverOptions{}.tolerance, 1e-8, 1e-2}) {
+  for (double tolerance : {kConvergedTolerance, ExactSolverOptions{}.tolerance, 1e-8, 1e-6}) {
     for (double vy0 : {1e-3, 1e-6, 1e-9, 1e-12, 1e-15}) {
       for (double topspin : {0.0, 76.0, -76.0}) {
         BallVelocity in;
@@ -875,6 +926,9 @@ TEST(CushionExactSolver, RejectsToleranceOutsideItsRangeAndBadTraceSpacing) {
   expectRejected(withTolerance(0.0), {"tolerance", "= 0"});
   expectRejected(withTolerance(-0.125), {"tolerance", "-0.125"});
   expectRejected(withTolerance(0.5), {"tolerance", "0.5"});
+  // Found measuring the engine's impacts: at 1e-4 a sixth of rolling impacts with sidespin ran out
+  // of steps, so the range ends at 1e-6 (see kMaxTolerance).
+  expectRejected(withTolerance(1e-4), {"tolerance", "1e-04", "1e-06"});
   // 2^-70 = 8.4703294725430034e-22: far below rounding, the message must still show the value.
   expectRejected(withTolerance(0x1p-70), {"tolerance", "8.47", "e-22"});
   expectRejected(withTolerance(std::numeric_limits<double>::quiet_NaN()), {"tolerance", "nan"});

@@ -359,7 +359,7 @@ TEST(CushionModelValidation, RejectsClothFrictionThatCouldHoldTheBallAgainstTheC
   p.cloth_friction = 0.99;
   const double s = 0.4, c = std::sqrt(1 - s * s);
   ASSERT_LT(c - 0.43 * s - 0.99 * (s + 0.43 * c), 0);
-  expectRejected([p] { validateCushionParams(p); }, {"mu_s = 0.98999999999999999", "mu_w"});
+  expectRejected([p] { validateCushionParams(p); }, {"mu_s = 0.99 ", "mu_w"});
 }
 
 TEST(CushionModelValidation, RejectsNonFiniteParameters) {
@@ -428,7 +428,7 @@ TEST(CushionModelValidation, RejectsSpeedsAndSpinsBeyondTheBounds) {
   BallVelocity spinning = ball;
   spinning.w.x() = 2 * kMaxBallSpin_radps;
   expectRejected([spinning] { validateIncomingBall(spinning); },
-                 {"w_x", "2000000", "at most 1000000"});
+                 {"w_x", "2e+06", "at most 1e+06"});
   // Regression (found by fuzzing): v_y = 5e-324 m/s stalled the exact solver (zero first step).
   BallVelocity creeping = ball;
   creeping.v.y() = std::numeric_limits<double>::denorm_min();
