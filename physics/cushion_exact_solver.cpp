@@ -278,6 +278,10 @@ struct ContactState {
   Eigen::Vector2d direction =
       Eigen::Vector2d::UnitX();                      // slip direction for a slip of exactly zero
   Eigen::Vector2d creep = Eigen::Vector2d::UnitX();  // held: where to start looking for phi*
+  // Held with a slip that started from zero (not a small slip caught sliding steadily): its slip
+  // lags phi*, which turned from creep_origin since then (see lagCorrected).
+  bool creep_from_rest = false;
+  Eigen::Vector2d creep_origin = Eigen::Vector2d::UnitX();
   int small_slip_steps = 0;  // consecutive accepted steps with a slip below kStagnantSlipMultiple
   // Slipping and approaching zero along its line: runs in P (see kApproachTurn).
   bool approaching = false;
@@ -552,7 +556,24 @@ class ExactImpact {
     if (!(size > own)) return false;
     laws->stick[1] = false;
     laws->direction[1] = r0 / size;
+    if (contacts_[1].creep_from_rest) {
+      laws->direction[1] =
+          lagCorrected(contacts_[1].creep_origin, laws->direction[1], size / (2 * size - own));
+    }
     return true;
+  }
+
+  // The direction of a slip that grows from zero while phi* turns: the slip is the sum of what
+  // phi* drove since it was zero, so it lags phi*. With the slip growing at g = |r0| - k from zero
+  // at P0 and phi* turning steadily at psi', its direction turns at psi' |r0| / (|r0| + g) (from
+  // d theta/dP = |r0| sin(psi - theta) / |u| with |u| = g (P - P0)): it has followed the share
+  // weight = |r0| / (2 |r0| - k) of phi*'s turn since the origin. Without it the held law misses
+  // the lag at first order and ends while the slip is still tiny.
+  static Eigen::Vector2d lagCorrected(const Eigen::Vector2d& origin, const Eigen::Vector2d& phi,
+                                      double weight) {
+    // Between the two unit vectors by that share (normalized linear blend: its angle misses the
+    // share of the angle by O(turn^3), below the O(turn^2) the correction itself leaves).
+    return ((1 - weight) * origin + weight * phi).normalized();
   }
 
   // The laws in force at slips u: slipping contacts slide along their slips; held contacts stick if
@@ -754,7 +775,9 @@ class ExactImpact {
     const Laws laws = lawsAt(u, nullptr);
     if (laws.stick[k]) return creep_error_limit_;
     const double misalignment = std::abs(cross(u[k], laws.direction[k]));
-    const double size = u[k].norm() * (creep_error_limit_ / regularizing_slip_);
+    // (A slip from rest under the lag-corrected law is measured by its misalignment alone.)
+    const double size =
+        contacts_[k].creep_from_rest ? 0 : u[k].norm() * (creep_error_limit_ / regularizing_slip_);
     return creep_error_limit_ - std::max(misalignment, size);
   }
   double eventSlope(const Event& event,
@@ -817,8 +840,14 @@ class ExactImpact {
       // A held law's error grows as the square of the impulse from where the slip was zero (the
       // lag of a direction that turns at a steady rate): the root of g = A - B t^2 through the
       // bracket's ends, which regula falsi would approach only slowly from the far end.
-      if (event.creep_end && g_lo > g_hi)
-        trial = std::sqrt(lo * lo + g_lo * (hi * hi - lo * lo) / (g_lo - g_hi));
+      if (event.creep_end && g_lo > g_hi) {
+        if (contacts_[event.contact].creep_from_rest) {  // corrected for the lag: about t^3
+          const double lo3 = lo * lo * lo, hi3 = hi * hi * hi;
+          trial = std::cbrt(lo3 + g_lo * (hi3 - lo3) / (g_lo - g_hi));
+        } else {
+          trial = std::sqrt(lo * lo + g_lo * (hi * hi - lo * lo) / (g_lo - g_hi));
+        }
+      }
       if (!(trial > lo && trial < hi) && g_lo > g_hi)
         trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
       if (!(trial > lo && trial < hi)) trial = 0.5 * (lo + hi);
@@ -891,6 +920,7 @@ class ExactImpact {
     if (++changes_ > kMaxContactChanges)
       throw std::logic_error("cushion contacts changed state too often");
     contacts_[k].mode = mode;
+    contacts_[k].creep_from_rest = false;
     contacts_[k].approaching = false;
     contacts_[k].approach_blocked = false;
   }
@@ -942,6 +972,8 @@ class ExactImpact {
     Laws laws = lawsAt(slips(z), nullptr);
     laws.stick[k] = true;
     contacts_[k].creep = creepDirectionSearch(k, laws);
+    contacts_[k].creep_from_rest = true;
+    contacts_[k].creep_origin = contacts_[k].creep;
   }
 
   // The step (in tau) after which held contact k, sliding along phi*, is predicted to have used
@@ -953,6 +985,7 @@ class ExactImpact {
   double heldLawStep(int k, const State& z, const State& k1) const {
     const double none = std::numeric_limits<double>::infinity();
     if (!(k1[kP] > 0)) return none;
+    if (contacts_[k].creep_from_rest) return none;  // its end is located (t^3, in locate)
     const std::array<Eigen::Vector2d, 2> u = slips(z);
     const Laws here = lawsAt(u, nullptr);
     if (here.stick[k]) return none;
@@ -1289,7 +1322,13 @@ CushionImpactResult ExactImpact::run() {
         if (held(k) && u.norm() > 0) release(k, z);
         continue;
       }
-      if (events[i].sign > 0) continue;  // it slides along phi* from here (reportModes records it)
+      if (events[i].sign > 0) {  // it slides along phi* from here (reportModes records it)
+        const int k = events[i].contact;
+        contacts_[k].creep_from_rest = false;
+        contacts_[k].creep_origin = lawsAt(slips(z), nullptr).direction[k];
+        contacts_[k].creep_from_rest = true;
+        continue;
+      }
       // The cone holds the contact again. With a slip left it slides (and its slip shrinks); with
       // none to speak of it sticks.
       const int k = events[i].contact;
