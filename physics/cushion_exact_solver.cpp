@@ -350,6 +350,10 @@ class ExactImpact {
   bool held(int k) const {
     return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Stick;
   }
+  // Whether held contact k follows the lag-corrected law (clothHeldLaws): the cloth contact, held
+  // from rest while the nose slides. Only then is its law accurate beyond a small slip; otherwise
+  // (phi* found numerically, the nose held) the slip measured against s0 also ends it.
+  bool lagCorrected(int k) const { return k == 1 && contacts_[1].creep_from_rest && !held(0); }
   // Whether slipping contact k's factor |u| / (|u| + s0) is in sigma (not while it approaches).
   bool regularized(int k) const { return slipping(k) && !contacts_[k].approaching; }
 
@@ -786,7 +790,7 @@ class ExactImpact {
     const double misalignment = std::abs(cross(u[k], laws.direction[k]));
     // (A slip from rest under the lag-corrected law is measured by its misalignment alone.)
     const double size =
-        contacts_[k].creep_from_rest ? 0 : u[k].norm() * (creep_error_limit_ / regularizing_slip_);
+        lagCorrected(k) ? 0 : u[k].norm() * (creep_error_limit_ / regularizing_slip_);
     return creep_error_limit_ - std::max(misalignment, size);
   }
   double eventSlope(const Event& event,
@@ -850,7 +854,7 @@ class ExactImpact {
       // lag of a direction that turns at a steady rate): the root of g = A - B t^2 through the
       // bracket's ends, which regula falsi would approach only slowly from the far end.
       if (event.creep_end && g_lo > g_hi) {
-        if (contacts_[event.contact].creep_from_rest) {  // corrected for the lag: about t^3
+        if (lagCorrected(event.contact)) {  // corrected for the lag: about t^3
           const double lo3 = lo * lo * lo, hi3 = hi * hi * hi;
           trial = std::cbrt(lo3 + g_lo * (hi3 - lo3) / (g_lo - g_hi));
         } else {
@@ -930,6 +934,9 @@ class ExactImpact {
       throw std::logic_error("cushion contacts changed state too often");
     contacts_[k].mode = mode;
     contacts_[k].creep_from_rest = false;
+    // The cloth's slip from rest grew under the nose's sliding friction; once the nose is held it
+    // grows otherwise, and the lag correction's origin no longer stands for it.
+    if (k == 0 && mode == ContactMode::Stick) contacts_[1].creep_from_rest = false;
     contacts_[k].approaching = false;
     contacts_[k].approach_blocked = false;
   }
@@ -996,7 +1003,7 @@ class ExactImpact {
   double heldLawStep(int k, const State& z, const State& k1) const {
     const double none = std::numeric_limits<double>::infinity();
     if (!(k1[kP] > 0)) return none;
-    if (contacts_[k].creep_from_rest) return none;  // its end is located (t^3, in locate)
+    if (lagCorrected(k)) return none;  // its end is located (t^3, in locate)
     const std::array<Eigen::Vector2d, 2> u = slips(z);
     const Laws here = lawsAt(u, nullptr);
     if (here.stick[k]) return none;
