@@ -6,8 +6,8 @@
 
 namespace baize::physics {
 
-// `value` with 17 significant digits, so that reading the text back gives the same double bit for
-// bit ("nan", "inf" as such); also the number format of the tools' CSV output.
+// The shortest text that reads back as the same double bit for bit ("nan", "inf" as such): 0.3,
+// not 0.29999999999999999; also the number format of the tools' CSV output.
 std::string valueText(double value);
 
 // Throws std::invalid_argument("<what> = <value> is not allowed: <allowed>").
