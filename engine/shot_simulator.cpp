@@ -238,9 +238,9 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(who(i) + ": " + e.what());
     }
-    // Speeds and spins within the bounds every impact model takes (cushion_model.h). Beyond them
-    // the cloth motion has no precision left (found by fuzzing: a ball touching a cushion with
-    // w_z = -5.7e250 rad/s left the table, as w_z^2 overflows its energy and its spin-down time).
+    // Speeds and spins within the bounds every impact model takes (cushion_model.h); far beyond
+    // them the arithmetic is not sound (w_z^2 overflows above about 1e154 rad/s). Found by
+    // fuzzing: a ball touching a cushion with w_z = -5.7e250 rad/s was accepted and left the table.
     static const char* const axes[] = {"x", "y", "z"};
     for (int c = 0; c < 3; ++c) {
       if (!(std::abs(balls[i].velocity[c]) <= physics::kMaxBallSpeed_mps)) {
