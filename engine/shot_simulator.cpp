@@ -238,6 +238,22 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(who(i) + ": " + e.what());
     }
+    // Speeds and spins within the bounds every impact model takes (cushion_model.h); far beyond
+    // them the arithmetic is not sound (w_z^2 overflows above about 1e154 rad/s). Found by
+    // fuzzing: a ball touching a cushion with w_z = -5.7e250 rad/s was accepted and left the table.
+    static const char* const axes[] = {"x", "y", "z"};
+    for (int c = 0; c < 3; ++c) {
+      if (!(std::abs(balls[i].velocity[c]) <= physics::kMaxBallSpeed_mps)) {
+        physics::rejectValue(
+            who(i) + " velocity v_" + axes[c] + " (m/s)", balls[i].velocity[c],
+            "it must be of magnitude at most " + physics::valueText(physics::kMaxBallSpeed_mps));
+      }
+      if (!(std::abs(balls[i].angular_velocity[c]) <= physics::kMaxBallSpin_radps)) {
+        physics::rejectValue(
+            who(i) + " angular velocity w_" + axes[c] + " (rad/s)", balls[i].angular_velocity[c],
+            "it must be of magnitude at most " + physics::valueText(physics::kMaxBallSpin_radps));
+      }
+    }
   }
   // Overlaps by a sweep along x: only balls less than 2R apart in x can overlap (n log n, so that
   // a crowded table costs little).

@@ -69,13 +69,17 @@
 // vertical velocity does no work, and the normal force returns e^2 of what it absorbed, so energy
 // never grows.
 //
-// Integration. Adaptive Dormand-Prince 5(4) in P with error control relative to the speed scale;
-// the end of compression and of restitution are located to 1e-12 of their scales by the Illinois
-// method on the length of the last step (each trial is one full RK step from the step's start). The
-// steps are also shortened so that a decreasing slip (ball-ball, or a loaded cloth contact) is
-// approached by at most 90 % of its predicted distance per step, so the non-smooth points are
-// reached, not jumped over. The RHS is smooth between those points, so the result converges at the
-// tolerance.
+// Integration. Adaptive Dormand-Prince 5(4) in P with error control relative to the speed scale,
+// except for g_n and W, whose errors are measured against the approach g_n(0) and mu* g_n(0)^2:
+// g_n is integrated on its own, not taken as v1n - v2n, which on a grazing contact at ball speeds
+// is round-off (the approach may be 1e-100 m/s, kMinApproachSpeed_mps, beside m/s speeds); the
+// impact then takes as few steps as a head-on one, its rates barely changing over its small
+// impulse. The end of compression and of restitution are located to 1e-12 of their scales by the
+// Illinois method on the length of the last step (each trial is one full RK step from the step's
+// start). The steps are also shortened so that a decreasing slip (ball-ball, or a loaded cloth
+// contact) is approached by at most 90 % of its predicted distance per step, so the non-smooth
+// points are reached, not jumped over. The RHS is smooth between those points, so the result
+// converges at the tolerance.
 
 namespace baize::physics {
 namespace {
@@ -114,6 +118,9 @@ enum Index : int {
   kW2n,
   kW2t,
   kW2z,
+  // g_n = (v1 - v2) . n, m/s, integrated as a state of its own: on a grazing contact the approach
+  // (down to kMinApproachSpeed_mps) is far below the round-off of v1n - v2n at m/s ball speeds.
+  kApproach,
   kWork,  // W, J: work of the normal force at the ball-ball contact
   kTable1,
   kTable2,  // table normal impulses, N s
@@ -173,7 +180,8 @@ void rates(const Model& m, const State& y, bool rolling, State& dy) {
   dy[kW2n] = k2 * T2.y();
   dy[kW2t] = k2 * (-f_z - T2.x());
   dy[kW2z] = k2 * f_t;
-  dy[kWork] = y[kV1n] - y[kV2n];
+  dy[kApproach] = dy[kV1n] - dy[kV2n];
+  dy[kWork] = y[kApproach];
   dy[kTable1] = N1;
   dy[kTable2] = N2;
   dy[kLift1] = std::max(0.0, f_z);
@@ -289,11 +297,16 @@ bool slipVanished(const Model& m, const State& y) {
 MathavanOutcome integrateAdaptive(const Model& m, const State& y0, double speed_scale,
                                   double restitution, double tolerance) {
   const double mu_red = m.m1 * m.m2 / (m.m1 + m.m2);
-  const double P_scale = mu_red * (y0[kV1n] - y0[kV2n]);
+  const double approach = y0[kApproach];
+  const double P_scale = mu_red * approach;
   Integrator integrator{m, {}, tolerance};
   for (int i = 0; i < kStateSize; ++i) integrator.scale[i] = speed_scale;
   for (int i : {kW1n, kW1t, kW1z, kW2n, kW2t, kW2z}) integrator.scale[i] = speed_scale / m.R;
-  integrator.scale[kWork] = mu_red * speed_scale * speed_scale;
+  // The normal approach and the normal work decide the ends of compression and restitution, so
+  // their error is measured against the approach itself (a grazing contact's is tiny), not
+  // against the ball speeds.
+  integrator.scale[kApproach] = approach;
+  integrator.scale[kWork] = mu_red * approach * approach;
   for (int i : {kTable1, kTable2, kLift1, kLift2, kFrictionT, kFrictionZ}) {
     integrator.scale[i] = mu_red * speed_scale;
   }
@@ -311,11 +324,9 @@ MathavanOutcome integrateAdaptive(const Model& m, const State& y0, double speed_
   // Event functions, positive before the event and scaled by the impact's own size so that grazing
   // impacts are resolved as finely as head-on ones: g_n / g_n(0) while compressing, then the work
   // still to be returned over W_c.
-  const double approach = y0[kV1n] - y0[kV2n];
   double compression_work = 0;
   auto event = [&](const State& s) {
-    return compressing ? (s[kV1n] - s[kV2n]) / approach
-                       : (s[kWork] - work_target) / compression_work;
+    return compressing ? s[kApproach] / approach : (s[kWork] - work_target) / compression_work;
   };
 
   for (long n = 0;; ++n) {
@@ -388,7 +399,7 @@ MathavanOutcome integrateAdaptive(const Model& m, const State& y0, double speed_
 // The paper's scheme: explicit Euler with rates frozen over each increment, trapezoidal work.
 MathavanOutcome integrateEuler(const Model& m, const State& y0, double restitution, int steps) {
   const double mu_red = m.m1 * m.m2 / (m.m1 + m.m2);
-  const double dP = (1 + restitution) * mu_red * (y0[kV1n] - y0[kV2n]) / steps;
+  const double dP = (1 + restitution) * mu_red * y0[kApproach] / steps;
   MathavanOutcome out;
   State y = y0, dy;
   double P = 0, work_target = 0;
@@ -400,9 +411,9 @@ MathavanOutcome integrateEuler(const Model& m, const State& y0, double restituti
       throw std::logic_error("Euler ball-ball integration did not terminate");
     rates(m, y, rolling, dy);
     ++out.evaluations;
-    const double g_before = y[kV1n] - y[kV2n];
+    const double g_before = y[kApproach];
     for (int i = 0; i < kStateSize; ++i) y[i] += dP * dy[i];
-    const double g_after = y[kV1n] - y[kV2n];
+    const double g_after = y[kApproach];
     y[kWork] += dP * ((g_before + g_after) / 2 - dy[kWork]);  // trapezoid instead of Euler
     P += dP;
     if (!rolling && slipVanished(m, y)) {
@@ -609,13 +620,16 @@ BallBallImpactResult resolveBallBallImpact(const BallBallParams& params, const B
   const double v2n = ball2.v.dot(f.n), v2t = ball2.v.dot(f.t);
   const Eigen::Vector3d w1(ball1.w.dot(f.n), ball1.w.dot(f.t), ball1.w.z());
   const Eigen::Vector3d w2(ball2.w.dot(f.n), ball2.w.dot(f.t), ball2.w.z());
+  // The approach as validated (> 0), from the relative velocity: v1n - v2n would cancel to
+  // round-off of the ball speeds (or to zero) on a grazing contact. n and f.n differ by at most
+  // kLineOfCentresTolerance relative.
+  const double g_n = approachSpeed(ball1, ball2, line_of_centres);
 
   BallBallImpactResult result;
   // Outgoing local state: v (n, t), w (n, t, z).
   Eigen::Vector2d v1_out, v2_out;
   Eigen::Vector3d w1_out, w2_out;
   if (params.model == BallBallModel::FrictionalInelastic) {
-    const double g_n = v1n - v2n;
     const double P = mu_red * (1 + e) * g_n;
     const double g_t = v1t - v2t + R * (w1.z() + w2.z());
     const double g_z = -R * (w1.y() + w2.y());
@@ -653,6 +667,7 @@ BallBallImpactResult resolveBallBallImpact(const BallBallParams& params, const B
     State y{};
     y[kV1n] = v1n, y[kV1t] = v1t, y[kW1n] = w1.x(), y[kW1t] = w1.y(), y[kW1z] = w1.z();
     y[kV2n] = v2n, y[kV2t] = v2t, y[kW2n] = w2.x(), y[kW2t] = w2.y(), y[kW2z] = w2.z();
+    y[kApproach] = g_n;
     const MathavanOutcome o = params.fixed_steps > 0
                                   ? integrateEuler(model, y, e, params.fixed_steps)
                                   : integrateAdaptive(model, y, speed_scale, e, params.tolerance);

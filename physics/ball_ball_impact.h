@@ -73,7 +73,8 @@ struct BallBallParams {
   double ball_friction = 0.05;    // mu_b, ball on ball
   double cloth_friction = 0.212;  // mu_s, ball on cloth
   // Allowed local error of one integration step (adaptive Dormand-Prince 5(4)), relative to the
-  // largest speed in the problem for velocities and to the matching impulse and work scales. At the
+  // largest speed in the problem for velocities and impulses, and to the approach speed for the
+  // normal approach and the normal work (which decide where the impact ends). At the
   // default the outgoing velocities agree with a converged (1e-14) solution within 1e-10 of that
   // speed (worst of 2000 random impacts: 1.2e-11), at about 180 rate evaluations per impact
   // (at most about 1500, when a loaded cloth slip swings round close to zero).

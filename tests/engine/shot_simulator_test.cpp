@@ -385,6 +385,17 @@ TEST(ShotSimulator, BadScenesAreRejectedWithTheValue) {
               HasSubstr("ball 1 is off the table: its x (m) = "));
   EXPECT_THAT(message({ballAt(0.3, -5)}), HasSubstr("ball 0 is off the table: its y (m) = -5"));
   EXPECT_THAT(message({ballAt(1.5, 0.8)}), HasSubstr("off the table"));
+  // Regression (found by fuzzing): a ball touching a cushion with w_z = -5.7e250 rad/s was
+  // accepted, and the cloth motion, with no precision left at that spin, moved it through the
+  // cushion; speeds and spins beyond the impact models' bounds (cushion_model.h) are refused.
+  BallState spinning = ballAt(0, -1.27 / 2 + 0.028575);
+  spinning.angular_velocity = {99.7, -839.9, -5.7277780524766055e+250};
+  EXPECT_THAT(message({spinning}), HasSubstr("ball 0 angular velocity w_z (rad/s) = "));
+  spinning.angular_velocity.z() = 2 * physics::kMaxBallSpin_radps;
+  EXPECT_THAT(message({ballAt(0, 0), spinning}), HasSubstr("ball 1 angular velocity w_z"));
+  BallState fast = ballAt(0, 0);
+  fast.velocity.x() = -2 * physics::kMaxBallSpeed_mps;
+  EXPECT_THAT(message({fast}), HasSubstr("ball 0 velocity v_x (m/s) = "));
   SimulationParams wrong = p;
   wrong.cloth.radius_m = 0.03;
   EXPECT_THROW(simulate(wrong, table, {ballAt(0, 0)}), std::invalid_argument);

@@ -506,6 +506,125 @@ TEST(BallBallImpact, MathavanIsLinearInTheIncomingVelocities) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Grazing contacts at ball speeds
+
+// Rate evaluations a grazing Mathavan impact may take: its rates hardly change over its tiny
+// impulse, so the adaptive solver needs a few steps of 7 evaluations (measured 106, about what a
+// head-on impact takes); before the fix it ran out of its 200000 steps.
+constexpr long kGrazingAdaptiveEvaluations = 200;
+// Increments of the paper's Euler scheme used on grazing impacts, and how late (in increments) it
+// may end: each of its two ends (compression, restitution) is detected up to one increment late.
+constexpr int kGrazingEulerSteps = 1000;
+constexpr double kEulerLateIncrements = 2;
+
+// Two balls at m/s with strong spin (also about the tangent, so the table and cloth friction act)
+// whose normal velocities differ by only approach_mps: both are about 1 m/s along
+// n = (~1, approach_mps / 2, 0), so v1n - v2n cancels to round-off (or to zero) while
+// (v1 - v2) . n = (0, 2, 0) . n is exactly approach_mps.
+Impact grazingImpact(double approach_mps) {
+  const double s = approach_mps / 2;
+  Impact i;
+  i.b1 = ballOf({1, 1, 0}, {50, -80, 60});
+  i.b2 = ballOf({1, -1, 0}, {-30, 70, 20});
+  i.n = {std::sqrt(1 - s * s), s, 0};
+  return i;
+}
+
+const double kGrazingApproaches_mps[] = {1e-9, 1e-15, 1e-30, 1e-100};
+
+TEST(BallBallImpact, MathavanResolvesGrazingContactsAtBallSpeeds) {
+  // Regression (found by fuzzing): the compression was tracked through v1n - v2n, which cancels
+  // to the ball speeds' round-off, so at 1e-30 and 1e-100 m/s the integration never saw the
+  // approach end and exhausted its step budget (std::logic_error), and at 1e-9 and 1e-15 m/s it
+  // ended at the wrong impulse. g_n is now a state of its own, with its error measured against
+  // the approach.
+  const BallBallParams p = snookerMathavan2014Params();
+  const double e = p.restitution;
+  const double mu_red = p.mass1_kg * p.mass2_kg / (p.mass1_kg + p.mass2_kg);
+  const double friction_product = p.cloth_friction * p.ball_friction;
+  std::vector<double> compression_per_approach;
+  for (double approach : kGrazingApproaches_mps) {
+    const Impact i = grazingImpact(approach);
+    ASSERT_EQ(approachSpeed(i.b1, i.b2, i.n), approach);
+    BallBallImpactResult r;
+    {
+      test::FloatingPointTraps traps;
+      r = resolveBallBallImpact(p, i.b1, i.b2, i.n);
+    }
+    EXPECT_LE(r.rhs_evaluations, kGrazingAdaptiveEvaluations) << approach;
+    EXPECT_LE(kineticEnergy(p, r.ball1, r.ball2),
+              kineticEnergy(p, i.b1, i.b2) * (1 + kEnergyRoundoffRelative))
+        << approach;
+    // dg_n/dP lies within (1 +- mu_s mu_b) / mu* (derivation in ball_ball_impact.cpp), so the
+    // compression ends at an impulse of about mu* times the approach.
+    EXPECT_GE(r.compression_impulse_Ns, mu_red * approach / (1 + friction_product)) << approach;
+    EXPECT_LE(r.compression_impulse_Ns, mu_red * approach / (1 - friction_product)) << approach;
+    // Over so small an impulse the rates are constant: g_n falls linearly, so the compression work
+    // is approach * P_c / 2 and the energetic restitution ends at P = (1 + e) P_c, where
+    // g_n = -e * approach.
+    EXPECT_NEAR(2 * r.compression_work_J / (r.compression_impulse_Ns * approach), 1.0,
+                kIntegratedRelative)
+        << approach;
+    EXPECT_NEAR(r.normal_impulse_Ns / r.compression_impulse_Ns, 1 + e, kIntegratedRelative)
+        << approach;
+    compression_per_approach.push_back(r.compression_impulse_Ns / approach);
+    // The velocities change by no more than the impulses allow (normal P, ball friction mu_b P,
+    // cloth friction mu_s mu_b P), plus round-off of the ball speeds.
+    const double impulse_bound = (1 + p.ball_friction + friction_product) * r.normal_impulse_Ns;
+    const double roundoff = kAlgebraicRelative * speedScale(p, i.b1, i.b2);
+    EXPECT_LE((r.ball1.v - i.b1.v).norm(), impulse_bound / p.mass1_kg + roundoff) << approach;
+    EXPECT_LE((r.ball2.v - i.b2.v).norm(), impulse_bound / p.mass2_kg + roundoff) << approach;
+  }
+  // Linear in the approach: the same impulse per m/s of approach at every scale.
+  for (double c : compression_per_approach) {
+    EXPECT_NEAR(c / compression_per_approach[0], 1.0, kIntegratedRelative);
+  }
+}
+
+TEST(BallBallImpact, PaperEulerSchemeResolvesGrazingContactsAtBallSpeeds) {
+  // Regression (as above): the Euler scheme's end of compression, tested on v1n - v2n, came at
+  // once (cancelled to zero) or never (std::logic_error after 1000 times its increments).
+  const BallBallParams adaptive = snookerMathavan2014Params();
+  BallBallParams euler = adaptive;
+  euler.fixed_steps = kGrazingEulerSteps;
+  const double mu_red =
+      adaptive.mass1_kg * adaptive.mass2_kg / (adaptive.mass1_kg + adaptive.mass2_kg);
+  for (double approach : kGrazingApproaches_mps) {
+    const Impact i = grazingImpact(approach);
+    BallBallImpactResult r, reference;
+    {
+      test::FloatingPointTraps traps;
+      r = resolveBallBallImpact(euler, i.b1, i.b2, i.n);
+      reference = resolveBallBallImpact(adaptive, i.b1, i.b2, i.n);
+    }
+    const double increment_Ns = (1 + euler.restitution) * mu_red * approach / kGrazingEulerSteps;
+    EXPECT_NEAR(r.compression_impulse_Ns, reference.compression_impulse_Ns,
+                kEulerLateIncrements * increment_Ns)
+        << approach;
+    EXPECT_NEAR(r.normal_impulse_Ns, reference.normal_impulse_Ns,
+                kEulerLateIncrements * increment_Ns)
+        << approach;
+  }
+}
+
+TEST(BallBallImpact, FrictionalInelasticNormalImpulseComesFromTheApproachOnGrazingContacts) {
+  // Newton's law on the approach itself: P = mu* (1 + e) (v1 - v2) . n, even where v1n - v2n
+  // cancels (before the fix, to zero at 1e-30 m/s: no impulse at all).
+  const BallBallParams p = poolParams();
+  const double mu_red = p.mass1_kg * p.mass2_kg / (p.mass1_kg + p.mass2_kg);
+  for (double approach : kGrazingApproaches_mps) {
+    const Impact i = grazingImpact(approach);
+    const auto r = resolveBallBallImpact(p, i.b1, i.b2, i.n);
+    EXPECT_NEAR(r.normal_impulse_Ns / (mu_red * (1 + p.restitution) * approach), 1.0,
+                kAlgebraicRelative)
+        << approach;
+    EXPECT_LE(kineticEnergy(p, r.ball1, r.ball2),
+              kineticEnergy(p, i.b1, i.b2) * (1 + kEnergyRoundoffRelative))
+        << approach;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
 // Accuracy of the Mathavan integration
 
 TEST(BallBallImpact, MathavanAdaptiveSolutionIsConverged) {
@@ -639,8 +758,8 @@ TEST(BallBallImpact, RejectsBadContacts) {
                       "ball 1 v_z");
   // Regression (found by fuzzing): a speed of 1e306 m/s ran the Euler scheme out of increments
   // (std::logic_error); speeds and spins beyond the bounds of cushion_model.h are refused.
-  expectValueRejected(
-      resolve(moving, ballOf({0, -1e306, 0}, Vector3d::Zero()), Vector3d::UnitX()), "ball 2 v_y");
+  expectValueRejected(resolve(moving, ballOf({0, -1e306, 0}, Vector3d::Zero()), Vector3d::UnitX()),
+                      "ball 2 v_y");
   expectValueRejected(
       resolve(ballOf({1, 0, 0}, {0, 0, 2 * kMaxBallSpin_radps}), resting, Vector3d::UnitX()),
       "ball 1 w_z");
