@@ -36,6 +36,12 @@
 // contact whose cone stops holding it (an event) slips along the friction it needed, so friction
 // stays continuous.
 //
+// Three special cases cut the cost where the general machinery is slow (docs/cushion.md, "Cost"):
+// the cloth contact's phi* while the nose slides is r0 / |r0| in closed form (its own friction
+// enters its slip rate isotropically); a cloth slip growing from rest follows a held law corrected
+// for the lag of its direction behind phi*; and a slip falling along its own line runs in P with
+// its friction along that line until it vanishes, instead of decaying exponentially in tau.
+//
 // The system in tau is integrated with the Dormand-Prince 8(5,3) pair, its error measured across
 // the path (an error of tau alone moves no state off it). The ends of compression (v_y = 0) and
 // restitution (W = (1 - e^2) W_c, eq. 17b), the instants a stuck contact breaks and the end of a
@@ -53,12 +59,12 @@ enum : int { kP = 0, kAx = 1, kAy = 2, kBx = 3, kBy = 4, kWork = 5 };
 // whose slip grows to it slips on as an ordinary slipping contact.
 constexpr double kRegularizingSlipFraction = 1e-3;
 // A slipping contact whose slip shrinks along its own line runs in P (its factor in sigma is 1)
-// while its slip rate turns the slip by at most this share of the rate that shrinks it (rad of
-// turn over the rest of its approach to zero, at the present rate). Friction then keeps its
-// direction, the slip falls linearly in P, and a few steps in P reach its zero, where in tau (the
-// slip's own factor) the same fall is an exponential decay whose direction mode is stiff: about
-// a quarter of an e-fold per step, over the fifteen e-folds from the regularizing slip to the
-// vanishing threshold.
+// with its friction held along that line, as long as the turn its slip rate gives it would carry
+// the slip off the line by at most this share of the misalignment limit (kCreepErrorFraction) by
+// the time it reaches zero. The slip then falls linearly in P and a step or two reach its zero,
+// where in tau (the slip's own factor) the same fall is an exponential decay whose direction mode
+// is stiff: about a quarter of an e-fold per step, over the fifteen e-folds from the regularizing
+// slip to the vanishing threshold.
 constexpr double kApproachEntry = 0.25;
 // The zero an approaching slip runs to is located where it is this multiple of the vanishing
 // threshold, to within the looseness (so that it has vanished when located).
@@ -292,7 +298,7 @@ struct ContactState {
   // m/s: released from its held law with a slip of a tenth of this; taken as sliding steadily
   // along phi* again only once its slip has grown to it (see kSteadyRearmGrowth).
   double steady_rearm_slip = 0;
-  // Slipping and approaching zero along its line: runs in P (see kApproachTurn).
+  // Slipping and approaching zero along its line: runs in P (see kApproachEntry).
   bool approaching = false;
   bool approach_blocked = false;  // left its line: not again until its mode changes
   Eigen::Vector2d approach_direction = Eigen::Vector2d::UnitX();  // its slip's line when it began
@@ -1045,7 +1051,7 @@ class ExactImpact {
     return true;
   }
 
-  // Which slipping contacts approach zero along their line (see kApproachTurn), from the rate
+  // Which slipping contacts approach zero along their line (see kApproachEntry), from the rate
   // dz/dtau at z. When that changes, tau changes meaning: the rate is taken again and the next
   // step h rescaled to cover the same impulse. Returns whether it changed.
   // du/dtau of both contacts under the rate dz/dtau.
