@@ -434,17 +434,27 @@ class ExactImpact {
   // with k = 7/2 mu_s q / M. So phi* = r0 / |r0|, along which the slip grows at |r0| - k (the cone
   // cannot hold the contact exactly when |r0| > k). This is the held contact of every rolling or
   // nearly rolling ball, the common case. Returns false when it does not apply.
-  bool clothCreepDirection(int k, Laws laws, Eigen::Vector2d* result) const {
+  bool clothCreepDirection(int k, const Laws& laws, Eigen::Vector2d* result) const {
     if (k != 1 || laws.stick[0]) return false;
-    laws.stick[1] = false;
-    laws.direction[1] = Eigen::Vector2d::Zero();
-    const Friction f = frictionFor(laws);
-    const Eigen::Vector2d r0 = slipRate(1, f);
-    const double own = 3.5 * mu_[1] * (s_ + c_ * f.a.y()) / M_;
-    const double size = r0.norm();
-    if (!(size > own)) return false;
-    *result = r0 / size;
+    const ClothDrive drive = clothDrive(laws);
+    const double size = drive.rate.norm();
+    if (!(size > drive.own)) return false;
+    *result = drive.rate / size;
     return true;
+  }
+
+  // The cloth's slip rate r0 without its own friction, and k, while the nose slides along
+  // laws.direction[0] (or is frictionless); see clothCreepDirection.
+  struct ClothDrive {
+    Eigen::Vector2d rate;  // r0, m/s per N s
+    double own = 0;        // k, m/s per N s
+  };
+  ClothDrive clothDrive(const Laws& laws) const {
+    const Eigen::Vector2d a = contacts_[0].frictionless
+                                  ? Eigen::Vector2d::Zero()
+                                  : Eigen::Vector2d(mu_[0] * laws.direction[0]);
+    return {Eigen::Vector2d(-coupling_x_ * a.x() / M_, -(c_ + coupling_y_ * a.y()) / M_),
+            3.5 * mu_[1] * (s_ + c_ * a.y()) / M_};
   }
 
   // The direction phi* a held contact k slides along when its cone cannot hold it: the slip it then
@@ -565,11 +575,9 @@ class ExactImpact {
   // (see clothCreepDirection). False (laws untouched) within rounding of the cone's edge, which
   // the general path settles.
   bool clothHeldLaws(Laws* laws) const {
-    const Eigen::Vector2d a = contacts_[0].frictionless
-                                  ? Eigen::Vector2d::Zero()
-                                  : Eigen::Vector2d(mu_[0] * laws->direction[0]);
-    const Eigen::Vector2d r0(-coupling_x_ * a.x() / M_, -(c_ + coupling_y_ * a.y()) / M_);
-    const double own = 3.5 * mu_[1] * (s_ + c_ * a.y()) / M_;
+    const ClothDrive drive = clothDrive(*laws);
+    const Eigen::Vector2d& r0 = drive.rate;
+    const double own = drive.own;
     const double size = r0.norm();
     if (1 - size / own >= kConeSlackRelative) return true;  // the cone holds it: it sticks
     if (!(size > own)) return false;
