@@ -38,9 +38,10 @@
 //
 // Three special cases cut the cost where the general machinery is slow (docs/cushion.md, "Cost"):
 // the cloth contact's phi* while the nose slides is r0 / |r0| in closed form (its own friction
-// enters its slip rate isotropically); a cloth slip growing from rest follows a held law corrected
-// for the lag of its direction behind phi*; and a slip falling along its own line runs in P with
-// its friction along that line until it vanishes, instead of decaying exponentially in tau.
+// enters its slip rate isotropically); a slip growing from rest while the other contact slides
+// follows a held law corrected for the lag of its direction behind phi*; and a slip falling along
+// its own line runs in P with its friction along that line until it vanishes, instead of decaying
+// exponentially in tau.
 //
 // The system in tau is integrated with the Dormand-Prince 8(5,3) pair, its error measured across
 // the path (an error of tau alone moves no state off it). The ends of compression (v_y = 0) and
@@ -100,6 +101,9 @@ constexpr double kSteadyCreepHold = 0.25;
 // 1.6e-14, where the limit is tiny).
 constexpr double kSteadyRearmGrowth = 10;
 constexpr double kCreepTurnProbe = 1e-3;
+// The turn (rad) over which lagShare differentiates the slip rate's turn about phi*: small against
+// the curvature of r(d) over the circle, large against rounding of the rates (1e-16 relative).
+constexpr double kLagProbeAngle_rad = 1e-5;
 // A slipping contact whose slip stays below this multiple of the vanishing threshold for this many
 // accepted steps has vanished: it lies within the integration's noise of zero and would only wander
 // there (a slip that friction can barely hold decays very slowly). Taking it as zero moves the
@@ -294,6 +298,9 @@ struct ContactState {
   // lags phi*, which turned from creep_origin since then (see lagCorrected).
   bool creep_from_rest = false;
   Eigen::Vector2d creep_origin = Eigen::Vector2d::UnitX();
+  // How its slip grows from zero: as the impulse since then (1: held as it vanished, its cone not
+  // holding it) or as its square (2: its cone held it until now, so its growth starts at zero).
+  double creep_growth_order = 1;
   int small_slip_steps = 0;  // consecutive accepted steps with a slip below kStagnantSlipMultiple
   // m/s: released from its held law with a slip of a tenth of this; taken as sliding steadily
   // along phi* again only once its slip has grown to it (see kSteadyRearmGrowth).
@@ -356,10 +363,10 @@ class ExactImpact {
   bool held(int k) const {
     return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Stick;
   }
-  // Whether held contact k follows the lag-corrected law (clothHeldLaws): the cloth contact, held
-  // from rest while the nose slides. Only then is its law accurate beyond a small slip; otherwise
-  // (phi* found numerically, the nose held) the slip measured against s0 also ends it.
-  bool lagCorrected(int k) const { return k == 1 && contacts_[1].creep_from_rest && !held(0); }
+  // Whether held contact k follows the lag-corrected law (lagCorrected below): held from rest
+  // while the other contact slides. Only then is its law accurate beyond a small slip; otherwise
+  // (the other contact held too) the slip measured against s0 also ends it.
+  bool lagCorrected(int k) const { return contacts_[k].creep_from_rest && !held(1 - k); }
   // Whether slipping contact k's factor |u| / (|u| + s0) is in sigma (not while it approaches).
   bool regularized(int k) const { return slipping(k) && !contacts_[k].approaching; }
 
@@ -534,8 +541,13 @@ class ExactImpact {
   // which the slip grows along itself, the one where it grows fastest.
   Eigen::Vector2d creepDirectionSearch(int k, Laws laws) const {
     laws.stick[k] = false;
+    // The cloth contact while the nose slides: r0 / |r0| (clothCreepDirection), also where its cone
+    // holds it (then no direction grows, and the search below ends on the same r0 / |r0|).
+    if (k == 1 && !laws.stick[0]) {
+      const Eigen::Vector2d r0 = clothDrive(laws).rate;
+      if (r0.norm() > 0) return r0.normalized();
+    }
     Eigen::Vector2d solved = Eigen::Vector2d::Zero();  // set whenever a closed form applies
-    if (clothCreepDirection(k, laws, &solved)) return solved;
     if (creepDirectionAffine(k, laws, &solved)) return solved;
     auto rateAlong = [&](double phi) {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
@@ -585,9 +597,31 @@ class ExactImpact {
     laws->direction[1] = r0 / size;
     if (contacts_[1].creep_from_rest) {
       laws->direction[1] =
-          lagCorrected(contacts_[1].creep_origin, laws->direction[1], size / (2 * size - own));
+          lagCorrected(contacts_[1].creep_origin, laws->direction[1],
+                       size / ((size - own) / contacts_[1].creep_growth_order + size));
     }
     return true;
+  }
+
+  // The share of phi*'s turn since its slip was zero that held contact k's slip follows (see
+  // lagCorrected), for any slip rate r(d): near phi* the slip's direction theta turns at
+  // d theta/dP = -kappa (theta - phi*) / |u| with kappa = -d cross(d, r(d)) / d theta at phi*, and
+  // with |u| = g (P - P0) and phi* turning steadily the slip follows the share kappa / (g + kappa),
+  // g = r(phi*) . phi* its growth. A slip that starts where the cone stops holding it grows from a
+  // zero rate, |u| ~ (P - P0)^2, and lags half as much: kappa / (g / 2 + kappa) to first order
+  // (creep_growth_order). (For the cloth, kappa = |r0| and g = |r0| - k: clothHeldLaws.) 1 (no
+  // correction) where no slip grows along phi*.
+  double lagShare(int k, Laws laws, const Eigen::Vector2d& phi) const {
+    laws.stick[k] = false;
+    laws.direction[k] = phi;
+    const double growth = slipRate(k, frictionFor(laws)).dot(phi);
+    const double cos_probe = std::cos(kLagProbeAngle_rad), sin_probe = std::sin(kLagProbeAngle_rad);
+    const Eigen::Vector2d turned(phi.x() * cos_probe - phi.y() * sin_probe,
+                                 phi.x() * sin_probe + phi.y() * cos_probe);
+    laws.direction[k] = turned;
+    const double restoring = -cross(turned, slipRate(k, frictionFor(laws))) / kLagProbeAngle_rad;
+    if (!(growth > 0) || !(restoring > 0)) return 1;
+    return restoring / (growth / contacts_[k].creep_growth_order + restoring);
   }
 
   // The direction of a slip that grows from zero while phi* turns: the slip is the sum of what
@@ -624,6 +658,8 @@ class ExactImpact {
         if (!laws.stick[k] || held(k) == false || coneMargin(k, f) >= kConeSlackRelative) continue;
         Eigen::Vector2d phi;
         if (!creepDirection(k, laws, contacts_[k].creep, &phi)) phi = creepDirectionSearch(k, laws);
+        if (lagCorrected(k))
+          phi = lagCorrected(contacts_[k].creep_origin, phi, lagShare(k, laws, phi));
         laws.stick[k] = false;
         laws.direction[k] = phi;
         changed = true;
@@ -633,8 +669,15 @@ class ExactImpact {
     return laws;
   }
 
+  // Whether both contacts slip with friction along their slips (neither held nor approaching):
+  // most of every impact, with its own rate (bothSlidingRate).
+  bool bothSliding() const {
+    return slipping(0) && slipping(1) && !contacts_[0].approaching && !contacts_[1].approaching;
+  }
+
   // dz/dtau.
   State rate(const State& z) {
+    if (bothSliding()) return bothSlidingRate(z);
     ++evaluations_;
     if (!held(0) && !held(1)) return slidingRate(z);
     std::array<double, 2> speed;
@@ -647,6 +690,35 @@ class ExactImpact {
     State r;
     r << 1, f.a.x(), f.a.y(), f.b.x(), f.b.y(), c_ * normalVelocity(z);
     return sigma * r;
+  }
+
+  // rate() while both contacts slide (bothSliding), with the speeds cancelled out of it: with d =
+  // (|u_I| + s0)(|u_C| + s0), sigma = |u_I| |u_C| / d, the nose's friction rate sigma mu_w u_I /
+  // |u_I| = (mu_w |u_C| / d) u_I and the cloth's sigma mu_s q u_C / |u_C| with q = s + c mu_w
+  // u_Iy / |u_I| is (mu_s (s |u_I| + c mu_w u_Iy) / d) u_C: one division, none by a speed.
+  State bothSlidingRate(const State& z) {
+    ++evaluations_;
+    const double P = z[kP], ax = z[kAx], ay = z[kAy], bx = z[kBx], by = z[kBy];
+    const double uIx = slip0_[0].x() - (3.5 * ax + coupling_x_ * bx) * inverse_mass_;
+    const double uIy =
+        slip0_[0].y() - (diagonal_y_ * ay + coupling_y_ * by - s_ * c_ * P) * inverse_mass_;
+    const double uCx = slip0_[1].x() - (coupling_x_ * ax + 3.5 * bx) * inverse_mass_;
+    const double uCy = slip0_[1].y() - (c_ * P + coupling_y_ * ay + 3.5 * by) * inverse_mass_;
+    const double speed_I = std::sqrt(uIx * uIx + uIy * uIy);
+    const double speed_C = std::sqrt(uCx * uCx + uCy * uCy);
+    const double inverse = 1 / ((speed_I + regularizing_slip_) * (speed_C + regularizing_slip_));
+    const double sigma = speed_I * speed_C * inverse;
+    const double nose = mu_[0] * speed_C * inverse;
+    const double cloth = mu_[1] * (s_ * speed_I + c_ * mu_[0] * uIy) * inverse;
+    const double vy = vy0_ - (c_ * P - s_ * ay + by) * inverse_mass_;
+    State r;
+    r[kP] = sigma;
+    r[kAx] = nose * uIx;
+    r[kAy] = nose * uIy;
+    r[kBx] = cloth * uCx;
+    r[kBy] = cloth * uCy;
+    r[kWork] = sigma * c_ * vy;
+    return r;
   }
 
   // rate() when no contact is held (most of every impact), written out: the same equations as
@@ -717,7 +789,15 @@ class ExactImpact {
     return false;
   }
 
+  // One Dormand-Prince step, with the rate while both contacts slide inlined into its stages.
   Step rungeKuttaStep(const State& z, const State& k1, double h) {
+    if (bothSliding())
+      return rungeKuttaStepWith(z, k1, h, [this](const State& y) { return bothSlidingRate(y); });
+    return rungeKuttaStepWith(z, k1, h, [this](const State& y) { return rate(y); });
+  }
+
+  template <typename Rate>
+  Step rungeKuttaStepWith(const State& z, const State& k1, double h, const Rate& rate) {
     using namespace dp853;
     const State k2 = rate(z + h * (a21 * k1));
     const State k3 = rate(z + h * (a31 * k1 + a32 * k2));
@@ -879,11 +959,23 @@ class ExactImpact {
         trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
       if (!(trial > lo && trial < hi)) trial = 0.5 * (lo + hi);
       const Step attempt = rungeKuttaStep(z, k1, trial);
+      const double g = eventValue(event, attempt.z);
       if (attempt.error > 1) {
+        // A trial that ends past the event may break the tolerance only because of what lies past
+        // it (a held contact's law changes there, which the step does not resolve): it still
+        // bounds the event from above. One that ends before the event was too long.
+        if (g <= tolerance_g && trial > lo) {
+          hi = trial;
+          g_hi = g;
+          if (side == -1) g_lo *= 0.5;
+          side = -1;
+          if (hi - lo <= kEventBracketUlps * kEpsilon * h) break;
+          trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
+          continue;
+        }
         *length = trial * stepFactor(attempt.error);
         return false;
       }
-      const double g = eventValue(event, attempt.z);
       Step polished;
       double shift = 0;
       if (polishOnto(event, attempt, trial, &shift, &polished)) {
@@ -908,7 +1000,9 @@ class ExactImpact {
       if (hi - lo <= kEventBracketUlps * kEpsilon * h) break;
       trial = newton(trial, g, eventSlope(event, attempt.rate_at_end));
     }
-    if (landed->error <= 1) return true;
+    // (A landing beyond the bracket is none: a trial that broke the tolerance past the event
+    // moved the bracket's end below it.)
+    if (landed->error <= 1 && *length <= hi) return true;
     // Only the full step, which broke the tolerance, saw the event: it may lie beyond. Take the
     // longest accurate stretch before it and look again from there.
     *length = lo > 0 ? lo : h * stepFactor(full.error);
@@ -950,7 +1044,7 @@ class ExactImpact {
     contacts_[k].creep_from_rest = false;
     // The cloth's slip from rest grew under the nose's sliding friction; once the nose is held it
     // grows otherwise, and the lag correction's origin no longer stands for it.
-    if (k == 0 && mode == ContactMode::Stick) contacts_[1].creep_from_rest = false;
+    if (mode == ContactMode::Stick) contacts_[1 - k].creep_from_rest = false;
     contacts_[k].approaching = false;
     contacts_[k].approach_blocked = false;
   }
@@ -1006,6 +1100,7 @@ class ExactImpact {
     contacts_[k].creep = creepDirectionSearch(k, laws);
     contacts_[k].creep_from_rest = true;
     contacts_[k].creep_origin = contacts_[k].creep;
+    contacts_[k].creep_growth_order = 1;
   }
 
   // The step (in tau) after which held contact k, sliding along phi*, is predicted to have used
@@ -1254,7 +1349,8 @@ CushionImpactResult ExactImpact::run() {
       if (std::abs(margin) > eventTolerance(candidate)) events.push_back(candidate);
       // While it slides along phi* its held law runs only as long as it is accurate: the step
       // must not carry it past that (the error estimate cannot see it, the held law being smooth).
-      if (margin < 0) {
+      // Also on the cone's edge (a break just located there), where the cone events are not armed.
+      if (margin < eventTolerance(candidate)) {
         events.push_back(Event{false, k, 1.0, true});
         h = std::min(h, heldLawStep(k, z, k1));
       }
@@ -1359,6 +1455,7 @@ CushionImpactResult ExactImpact::run() {
         contacts_[k].creep_from_rest = false;
         contacts_[k].creep_origin = lawsAt(slips(z), nullptr).direction[k];
         contacts_[k].creep_from_rest = true;
+        contacts_[k].creep_growth_order = 2;
         continue;
       }
       // The cone holds the contact again. With a slip left it slides (and its slip shrinks); with
