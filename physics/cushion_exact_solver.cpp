@@ -796,26 +796,67 @@ class ExactImpact {
     return rungeKuttaStepWith(z, k1, h, [this](const State& y) { return rate(y); });
   }
 
+  // z + h (c_1 k_1 + ... + c_n k_n), element by element.
+  struct Term {
+    double coefficient;
+    const State* rate;
+  };
+  template <int n>
+  static State stageInput(const State& z, double h, const std::array<Term, n>& terms) {
+    State y;
+    for (int i = 0; i < State::RowsAtCompileTime; ++i) {
+      double sum = terms[0].coefficient * (*terms[0].rate)[i];
+      for (int j = 1; j < n; ++j) sum += terms[j].coefficient * (*terms[j].rate)[i];
+      y[i] = z[i] + h * sum;
+    }
+    return y;
+  }
+
   template <typename Rate>
   Step rungeKuttaStepWith(const State& z, const State& k1, double h, const Rate& rate) {
     using namespace dp853;
-    const State k2 = rate(z + h * (a21 * k1));
-    const State k3 = rate(z + h * (a31 * k1 + a32 * k2));
-    const State k4 = rate(z + h * (a41 * k1 + a43 * k3));
-    const State k5 = rate(z + h * (a51 * k1 + a53 * k3 + a54 * k4));
-    const State k6 = rate(z + h * (a61 * k1 + a64 * k4 + a65 * k5));
-    const State k7 = rate(z + h * (a71 * k1 + a74 * k4 + a75 * k5 + a76 * k6));
-    const State k8 = rate(z + h * (a81 * k1 + a84 * k4 + a85 * k5 + a86 * k6 + a87 * k7));
-    const State k9 =
-        rate(z + h * (a91 * k1 + a94 * k4 + a95 * k5 + a96 * k6 + a97 * k7 + a98 * k8));
-    const State k10 = rate(z + h * (a101 * k1 + a104 * k4 + a105 * k5 + a106 * k6 + a107 * k7 +
-                                    a108 * k8 + a109 * k9));
-    const State k11 = rate(z + h * (a111 * k1 + a114 * k4 + a115 * k5 + a116 * k6 + a117 * k7 +
-                                    a118 * k8 + a119 * k9 + a1110 * k10));
-    const State k12 = rate(z + h * (a121 * k1 + a124 * k4 + a125 * k5 + a126 * k6 + a127 * k7 +
-                                    a128 * k8 + a129 * k9 + a1210 * k10 + a1211 * k11));
-    const State slope =
-        b1 * k1 + b6 * k6 + b7 * k7 + b8 * k8 + b9 * k9 + b10 * k10 + b11 * k11 + b12 * k12;
+    const State k2 = rate(stageInput<1>(z, h, {{{a21, &k1}}}));
+    const State k3 = rate(stageInput<2>(z, h, {{{a31, &k1}, {a32, &k2}}}));
+    const State k4 = rate(stageInput<2>(z, h, {{{a41, &k1}, {a43, &k3}}}));
+    const State k5 = rate(stageInput<3>(z, h, {{{a51, &k1}, {a53, &k3}, {a54, &k4}}}));
+    const State k6 = rate(stageInput<3>(z, h, {{{a61, &k1}, {a64, &k4}, {a65, &k5}}}));
+    const State k7 = rate(stageInput<4>(z, h, {{{a71, &k1}, {a74, &k4}, {a75, &k5}, {a76, &k6}}}));
+    const State k8 =
+        rate(stageInput<5>(z, h, {{{a81, &k1}, {a84, &k4}, {a85, &k5}, {a86, &k6}, {a87, &k7}}}));
+    const State k9 = rate(stageInput<6>(
+        z, h, {{{a91, &k1}, {a94, &k4}, {a95, &k5}, {a96, &k6}, {a97, &k7}, {a98, &k8}}}));
+    const State k10 = rate(stageInput<7>(z, h,
+                                         {{{a101, &k1},
+                                           {a104, &k4},
+                                           {a105, &k5},
+                                           {a106, &k6},
+                                           {a107, &k7},
+                                           {a108, &k8},
+                                           {a109, &k9}}}));
+    const State k11 = rate(stageInput<8>(z, h,
+                                         {{{a111, &k1},
+                                           {a114, &k4},
+                                           {a115, &k5},
+                                           {a116, &k6},
+                                           {a117, &k7},
+                                           {a118, &k8},
+                                           {a119, &k9},
+                                           {a1110, &k10}}}));
+    const State k12 = rate(stageInput<9>(z, h,
+                                         {{{a121, &k1},
+                                           {a124, &k4},
+                                           {a125, &k5},
+                                           {a126, &k6},
+                                           {a127, &k7},
+                                           {a128, &k8},
+                                           {a129, &k9},
+                                           {a1210, &k10},
+                                           {a1211, &k11}}}));
+    State slope;
+    for (int i = 0; i < State::RowsAtCompileTime; ++i) {
+      slope[i] = b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] +
+                 b11 * k11[i] + b12 * k12[i];
+    }
     Step step;
     step.z = z + h * slope;
     step.rate_at_end = rate(step.z);
