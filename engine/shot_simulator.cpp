@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -197,6 +198,85 @@ Box sweptBox(const physics::PositionQuadratic& path, double duration, double R) 
   return box.inflated(R + kBoxMargin_m);
 }
 
+// A convex polygon of at most kMaxClippedCorners corners, m: the box a half-strip is clipped from.
+// A box (4 corners) cut by three half-planes has at most 4 + 3 = 7.
+constexpr int kMaxClippedCorners = 8;
+struct ConvexPolygon {
+  std::array<Eigen::Vector2d, kMaxClippedCorners> corners;
+  int size = 0;
+};
+
+// The part of `polygon` where a.q <= b (Sutherland-Hodgman against one half-plane).
+ConvexPolygon clipped(const ConvexPolygon& polygon, const Eigen::Vector2d& a, double b) {
+  ConvexPolygon out;
+  for (int k = 0; k < polygon.size; ++k) {
+    const Eigen::Vector2d& p = polygon.corners[k];
+    const Eigen::Vector2d& q = polygon.corners[(k + 1) % polygon.size];
+    const double fp = a.dot(p) - b, fq = a.dot(q) - b;
+    if (fp <= 0) out.corners[out.size++] = p;
+    if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0))
+      out.corners[out.size++] = p + (fp / (fp - fq)) * (q - p);
+  }
+  return out;
+}
+
+// The safe interior below is built this far inside the cushion noses and checked with half this
+// margin to spare, m: far above the rounding of the checks' dot products (positions ~1 m, ~1e-16 m),
+// far below anything that matters for which balls it admits.
+constexpr double kSafeInteriorMargin_m = 1e-6;
+// A cushion normal counts as along an axis when its other component is below this (unit vector;
+// the shipped tables' rail normals are axis-aligned to rounding).
+constexpr double kAxisAlignedNormal = 1e-9;
+// Below this many balls the safe interior costs more than it saves (it costs about as much as the
+// full cushion and jaw checks of a few balls).
+constexpr std::size_t kSafeInteriorMinBalls = 8;
+
+// A box of ball centres that no cushion or jaw check can reject, so that balls inside it skip those
+// checks (a crowded table then costs little per ball); empty when none is found. Its sides are the
+// axis-aligned cushion noses moved R inwards, within the table's extent. Every cushion's and jaw's
+// rejection region (a centre nearer than R in front of or anywhere behind a cushion, beside it; a
+// centre within the jaw's radius + R) is then checked against the whole box, grown by a margin,
+// and any that reaches into the box empties it.
+Eigen::AlignedBox2d safeInterior(const TableGeometry& table, double R,
+                                 const Eigen::AlignedBox2d& extent) {
+  Eigen::AlignedBox2d box = extent;
+  const double inset = R + kSafeInteriorMargin_m;
+  for (const CushionSegment& c : table.cushions) {
+    for (int axis = 0; axis < 2; ++axis) {
+      if (!(std::abs(c.inward_normal[1 - axis]) < kAxisAlignedNormal)) continue;
+      if (c.inward_normal[axis] > 0) {
+        box.min()[axis] = std::max(box.min()[axis], std::max(c.start_m[axis], c.end_m[axis]) + inset);
+      } else {
+        box.max()[axis] = std::min(box.max()[axis], std::min(c.start_m[axis], c.end_m[axis]) - inset);
+      }
+    }
+  }
+  // Non-finite geometry (which validation lets through) would make the clipping below meaningless.
+  if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite())
+    return Eigen::AlignedBox2d();
+  const double spare = kSafeInteriorMargin_m / 2;
+  for (const JawArc& jaw : table.jaws) {
+    const Eigen::Vector2d nearest = jaw.centre_m.cwiseMax(box.min()).cwiseMin(box.max());
+    if (!((nearest - jaw.centre_m).norm() >= jaw.radius_m + R + spare)) return Eigen::AlignedBox2d();
+  }
+  ConvexPolygon corners;
+  for (auto corner : {Eigen::AlignedBox2d::BottomLeft, Eigen::AlignedBox2d::BottomRight,
+                      Eigen::AlignedBox2d::TopRight, Eigen::AlignedBox2d::TopLeft})
+    corners.corners[corners.size++] = box.corner(corner);
+  for (const CushionSegment& c : table.cushions) {
+    // Rejected beside the cushion (0 <= s <= 1 along it) at a distance below R in front of it.
+    if (!c.start_m.allFinite() || !c.end_m.allFinite()) return Eigen::AlignedBox2d();
+    const Eigen::Vector2d along = c.end_m - c.start_m;
+    const double length = along.norm();
+    ConvexPolygon reach =
+        clipped(corners, c.inward_normal, c.inward_normal.dot(c.start_m) + R + spare);
+    reach = clipped(reach, -along, -along.dot(c.start_m) + spare * length);
+    reach = clipped(reach, along, along.dot(c.start_m) + along.squaredNorm() + spare * length);
+    if (reach.size > 0) return Eigen::AlignedBox2d();
+  }
+  return box;
+}
+
 }  // namespace
 
 void validateSimulationInput(const SimulationParams& p, const TableGeometry& table,
@@ -285,6 +365,9 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
   };
   for (const JawArc& jaw : table.jaws) extendByCircle(jaw.centre_m, jaw.radius_m);
   for (const Circle& pocket : table.pockets) extendByCircle(pocket.centre_m, pocket.radius_m);
+  const Eigen::AlignedBox2d safe = !table.cushions.empty() && balls.size() >= kSafeInteriorMinBalls
+                                       ? safeInterior(table, R, extent)
+                                       : Eigen::AlignedBox2d();
   for (std::size_t i = 0; i < balls.size(); ++i) {
     if (!table.cushions.empty() && !extent.contains(balls[i].position)) {
       const Eigen::Vector2d& q = balls[i].position;
@@ -294,6 +377,7 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
                            "it must lie within [" + physics::valueText(extent.min()[axis]) + ", " +
                                physics::valueText(extent.max()[axis]) + "], the table's extent");
     }
+    if (safe.contains(balls[i].position)) continue;  // no cushion or jaw reaches it
     for (std::size_t k = 0; k < table.jaws.size(); ++k) {
       const JawArc& jaw = table.jaws[k];
       const double reach = jaw.radius_m + R - kContactSlack_m;
@@ -414,7 +498,17 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     b.box = b.moves ? sweptBox(b.path, b.change_dt_s, R) : Box::around(b.state.position, R);
   };
   for (int i = 0; i < n; ++i) {
-    balls[i].state = input[i];
+    Ball& b = balls[i];
+    b.state = input[i];
+    // A ball with no velocity and no spin at all is stationary, never changes state and stays
+    // where it is: exactly what settle() would get from the cloth-motion model (whose checks the
+    // input has passed), written directly because a crowd of resting balls would otherwise pay for
+    // those calls one by one.
+    if (b.state.velocity.isZero(0) && b.state.angular_velocity.isZero(0)) {
+      b.path.constant_m = b.state.position;
+      b.box = Box::around(b.state.position, R);
+      continue;
+    }
     settle(i, 0);
   }
   // The path of ball i from time t on (a shift of its quadratic).
