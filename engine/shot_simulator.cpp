@@ -206,17 +206,16 @@ constexpr double kGridCellRadii = 4;
 // balls), so that it costs O(balls) to build.
 constexpr double kGridCellsPerBall = 2;
 
-// The balls at rest when the shot starts, by the cells of a uniform grid of their centres: a moving
-// ball looks only in the cells its swept box reaches instead of at every ball, so a crowd of
-// resting balls costs little per event. Built once per shot: a ball that moves later is left for
-// the caller to skip.
+// The balls at rest when the shot starts (numbers `indices` of `balls`), by the cells of a uniform
+// grid of their centres: a moving ball looks only in the cells its swept box reaches instead of at
+// every ball, so a crowd of resting balls costs little per event. Built once per shot: a ball that
+// moves later is left for the caller to skip.
 class RestingGrid {
  public:
-  RestingGrid(const std::vector<int>& indices, const std::vector<Eigen::Vector2d>& centres_m,
-              double R) {
+  RestingGrid(const std::vector<int>& indices, const std::vector<BallState>& balls, double R) {
     if (indices.empty()) return;
     Eigen::AlignedBox2d extent;
-    for (int i : indices) extent.extend(centres_m[i]);
+    for (int i : indices) extent.extend(balls[i].position);
     origin_m_ = extent.min();
     const Eigen::Vector2d size = extent.sizes();
     const double per_cell = static_cast<double>(indices.size()) * kGridCellsPerBall;
@@ -228,7 +227,7 @@ class RestingGrid {
     std::vector<int> cell(indices.size());
     first_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
     for (std::size_t k = 0; k < indices.size(); ++k) {
-      const Eigen::Vector2d& q = centres_m[indices[k]];
+      const Eigen::Vector2d& q = balls[indices[k]].position;
       cell[k] = cellOf(q.y(), origin_m_.y(), rows_) * columns_ + cellOf(q.x(), origin_m_.x(), columns_);
       ++first_[cell[k] + 1];
     }
@@ -260,10 +259,10 @@ class RestingGrid {
   // The cell along one axis holding coordinate q, clamped to [0, count): a box reaching beyond the
   // grid (or not finite) covers the cells at its edge.
   int cellOf(double q, double origin, int count) const {
-    const double c = std::floor((q - origin) / cell_m_);
-    if (!(c > 0)) return 0;
+    const double c = (q - origin) / cell_m_;
+    if (!(c >= 1)) return 0;
     if (c >= count - 1) return count - 1;
-    return static_cast<int>(c);
+    return static_cast<int>(c);  // truncation: the floor, c being >= 1 here
   }
 
   Eigen::Vector2d origin_m_ = Eigen::Vector2d::Zero();
@@ -567,6 +566,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     Box box;
   };
   std::vector<Ball> balls(n);
+  std::vector<char> starts_at_rest(n, 0);  // no velocity and no spin at all at the start
   auto settle = [&](int i, double time_s) {
     Ball& b = balls[i];
     b.reference_time_s = time_s;
@@ -583,6 +583,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     // input has passed), written directly because a crowd of resting balls would otherwise pay for
     // those calls one by one.
     if (b.state.velocity.isZero(0) && b.state.angular_velocity.isZero(0)) {
+      starts_at_rest[i] = 1;
       b.path.constant_m = b.state.position;
       b.box = Box::around(b.state.position, R);
       continue;
@@ -600,6 +601,9 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     return shifted;
   };
   std::vector<Box> cushion_boxes, jaw_boxes, pocket_boxes;
+  cushion_boxes.reserve(table.cushions.size());
+  jaw_boxes.reserve(table.jaws.size());
+  pocket_boxes.reserve(table.pockets.size());
   for (const CushionSegment& c : table.cushions)
     cushion_boxes.push_back(Box::spanning(c.start_m, c.end_m));
   for (const JawArc& jaw : table.jaws) jaw_boxes.push_back(Box::around(jaw.centre_m, jaw.radius_m));
@@ -769,20 +773,29 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   // The balls resting at the start, by place; those that come to rest later are looked at one by
   // one (a few at most, in practice).
   std::vector<int> initially_resting, resting_later;
-  std::vector<Eigen::Vector2d> centres(n);
-  for (int i = 0; i < n; ++i) {
-    centres[i] = balls[i].state.position;
+  for (int i = 0; i < n; ++i)
     if (!balls[i].moves) initially_resting.push_back(i);
-  }
-  const RestingGrid resting_grid(initially_resting, centres, R);
+  const RestingGrid resting_grid(initially_resting, input, R);
   std::vector<char> in_grid(n, 0), is_resting_later(n, 0);
   for (int i : initially_resting) in_grid[i] = 1;
   int on_table = n;  // balls not pocketed
   std::vector<int> self_predicting;  // changed balls that predict their pairs with changed balls
 
   std::vector<int> changed;            // balls whose motion changed at the last event
-  std::vector<char> is_changed(n, 1);  // the same, by ball
-  for (int i = 0; i < n; ++i) changed.push_back(i);
+  std::vector<char> is_changed(n, 0);  // the same, by ball
+  // In the first pass every ball is new, but a ball exactly at rest has nothing to predict (no
+  // event of its own, and its pairs with the moving balls are predicted by those): it is only
+  // counted among the resting ones, so a crowd of them costs nothing there either.
+  long resting_from_start = 0;
+  for (int i = 0; i < n; ++i) {
+    if (starts_at_rest[i]) {
+      own[i] = Candidate{kInfinity, EventKind::StateChange, i};  // what predictOwn() would give
+      ++resting_from_start;
+      continue;
+    }
+    changed.push_back(i);
+    is_changed[i] = 1;
+  }
   bool first_pass = true;  // every ball is new; pairs of resting balls are left unpredicted
   for (long count = 0;; ++count) {
     if (count == p.max_events) {
@@ -865,7 +878,10 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
           self_predicting.begin();
       result.skipped_predictions += (on_table - 1) - predicted_elsewhere - visited;
     }
-    if (first_pass) result.skipped_predictions += resting * (resting - 1) / 2;
+    if (first_pass) {
+      resting += resting_from_start;
+      result.skipped_predictions += resting * (resting - 1) / 2;
+    }
     first_pass = false;
     for (int k : active) {
       rescanned[k] =
