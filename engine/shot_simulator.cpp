@@ -414,16 +414,23 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
   }
   // Overlaps by a sweep along x: only balls less than 2R apart in x can overlap (n log n, so that
   // a crowded table costs little).
-  std::vector<std::pair<double, std::size_t>> by_x(balls.size());  // (x, ball), by x then ball
-  for (std::size_t i = 0; i < balls.size(); ++i) by_x[i] = {balls[i].position.x(), i};
-  std::sort(by_x.begin(), by_x.end());
+  struct Centre {
+    double x, y;
+    std::size_t ball;
+  };
+  std::vector<Centre> by_x(balls.size());  // by x, then by ball
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    by_x[i] = {balls[i].position.x(), balls[i].position.y(), i};
+  std::sort(by_x.begin(), by_x.end(), [](const Centre& a, const Centre& b) {
+    return a.x < b.x || (a.x == b.x && a.ball < b.ball);
+  });
   for (std::size_t m = 0; m < by_x.size(); ++m) {
-    for (std::size_t k = m + 1; k < by_x.size() && by_x[k].first - by_x[m].first < 2 * R; ++k) {
-      const std::size_t i = std::max(by_x[m].second, by_x[k].second),
-                        j = std::min(by_x[m].second, by_x[k].second);
+    for (std::size_t k = m + 1; k < by_x.size() && by_x[k].x - by_x[m].x < 2 * R; ++k) {
       // Balls 2R apart or more in y do not overlap: their distance is at least that (to a rounding
       // far below kContactSlack_m), so the square root is not needed.
-      if (std::abs(balls[i].position.y() - balls[j].position.y()) >= 2 * R) continue;
+      if (std::abs(by_x[k].y - by_x[m].y) >= 2 * R) continue;
+      const std::size_t i = std::max(by_x[m].ball, by_x[k].ball),
+                        j = std::min(by_x[m].ball, by_x[k].ball);
       const double gap = (balls[i].position - balls[j].position).norm() - 2 * R;
       if (gap < -kContactSlack_m) {
         physics::rejectValue(who(i) + " overlaps ball " + std::to_string(j) + ": their gap (m)",
