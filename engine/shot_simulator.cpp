@@ -223,12 +223,14 @@ class RestingGrid {
                         size.maxCoeff() / per_cell});
     columns_ = cellOf(extent.max().x(), origin_m_.x(), kMaxCells) + 1;
     rows_ = cellOf(extent.max().y(), origin_m_.y(), kMaxCells) + 1;
-    // Counting sort of the balls by cell: cell c holds members_[first_[c]] to members_[first_[c+1]).
+    // Counting sort of the balls by cell: cell c holds members_[first_[c]] to
+    // members_[first_[c+1]).
     std::vector<int> cell(indices.size());
     first_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
     for (std::size_t k = 0; k < indices.size(); ++k) {
       const Eigen::Vector2d& q = balls[indices[k]].position;
-      cell[k] = cellOf(q.y(), origin_m_.y(), rows_) * columns_ + cellOf(q.x(), origin_m_.x(), columns_);
+      cell[k] =
+          cellOf(q.y(), origin_m_.y(), rows_) * columns_ + cellOf(q.x(), origin_m_.x(), columns_);
       ++first_[cell[k] + 1];
     }
     for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
@@ -295,8 +297,8 @@ ConvexPolygon clipped(const ConvexPolygon& polygon, const Eigen::Vector2d& a, do
 }
 
 // The safe interior below is built this far inside the cushion noses and checked with half this
-// margin to spare, m: far above the rounding of the checks' dot products (positions ~1 m, ~1e-16 m),
-// far below anything that matters for which balls it admits.
+// margin to spare, m: far above the rounding of the checks' dot products (positions ~1 m, ~1e-16
+// m), far below anything that matters for which balls it admits.
 constexpr double kSafeInteriorMargin_m = 1e-6;
 // A cushion normal counts as along an axis when its other component is below this (unit vector;
 // the shipped tables' rail normals are axis-aligned to rounding).
@@ -319,9 +321,11 @@ Eigen::AlignedBox2d safeInterior(const TableGeometry& table, double R,
     for (int axis = 0; axis < 2; ++axis) {
       if (!(std::abs(c.inward_normal[1 - axis]) < kAxisAlignedNormal)) continue;
       if (c.inward_normal[axis] > 0) {
-        box.min()[axis] = std::max(box.min()[axis], std::max(c.start_m[axis], c.end_m[axis]) + inset);
+        box.min()[axis] =
+            std::max(box.min()[axis], std::max(c.start_m[axis], c.end_m[axis]) + inset);
       } else {
-        box.max()[axis] = std::min(box.max()[axis], std::min(c.start_m[axis], c.end_m[axis]) - inset);
+        box.max()[axis] =
+            std::min(box.max()[axis], std::min(c.start_m[axis], c.end_m[axis]) - inset);
       }
     }
   }
@@ -762,20 +766,31 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
       partners[b].push_back(a);
     }
   };
-  // Ball k's earliest candidate, from scratch.
+  // Ball k's earliest candidate, from scratch. Its list of partners is cleaned on the way (pairs
+  // since predicted empty and repeats dropped), so that it cannot grow with every event of a
+  // neighbour while ball k itself has none.
+  std::vector<char> listed(n, 0);  // in the cleaned list, by ball
   auto rescan = [&](int k) {
     Candidate best = own[k];
-    for (int j : partners[k]) {
+    std::vector<int>& list = partners[k];
+    std::size_t kept = 0;
+    for (std::size_t m = 0; m < list.size(); ++m) {
+      const int j = list[m];
       const Candidate c = pairCandidate(k, j);
-      if (c.dt_s < kInfinity && c < best) best = c;
+      if (!(c.dt_s < kInfinity) || listed[j]) continue;
+      listed[j] = 1;
+      list[kept++] = j;
+      if (c < best) best = c;
     }
+    list.resize(kept);
+    for (int j : list) listed[j] = 0;
     next[k] = best;
   };
   // A pair's prediction is finite only while one of its balls moves (it is predicted again when
   // either changes), so the next event is the earliest candidate of a ball that moves or has an
   // event of its own ahead (a spinning ball's stop): only those "active" balls' earliest candidates
   // are kept, and a resting ball costs nothing per event.
-  std::vector<int> active, movers;  // movers: the active balls that move
+  std::vector<int> active, movers;                     // movers: the active balls that move
   std::vector<char> is_active(n, 0), rescanned(n, 0);  // rescanned: its candidate found anew
   // The balls resting at the start, by place; those that come to rest later are looked at one by
   // one (a few at most, in practice).
@@ -785,7 +800,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   const RestingGrid resting_grid(initially_resting, input, R);
   std::vector<char> in_grid(n, 0), is_resting_later(n, 0);
   for (int i : initially_resting) in_grid[i] = 1;
-  int on_table = n;  // balls not pocketed
+  int on_table = n;                  // balls not pocketed
   std::vector<int> self_predicting;  // changed balls that predict their pairs with changed balls
 
   std::vector<int> changed;            // balls whose motion changed at the last event
@@ -813,13 +828,13 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     // Predict again what involves a ball that changed; each other ball's earliest candidate is
     // then updated with its new pairs, or found again if it was one of the stale ones.
     long resting = 0;  // first pass: balls at rest, whose pairs are skipped
-    // Own events first: a pair is predicted only as far as both balls' paths hold.
     // Every pair of a changed ball is predicted again (or left empty): clear the old ones.
     for (int i : changed) {
       for (int j : partners[i])
         pair_time[static_cast<std::size_t>(std::min(i, j)) * n + std::max(i, j)] = kInfinity;
       partners[i].clear();
     }
+    // Own events first: a pair is predicted only as far as both balls' paths hold.
     for (int i : changed) {
       if (!balls[i].pocketed) {
         predictOwn(i);

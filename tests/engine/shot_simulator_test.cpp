@@ -495,9 +495,8 @@ TEST(ShotSimulator, BallsJustBeyondACushionOrInsideAJawAreRejectedInACrowd) {
     EXPECT_EQ(verdict(p, table, near), "accepted") << "cushion " << k;
     const Eigen::Vector2d beyond = middle + (R - step_m) * c.inward_normal;
     near.back() = ballAt(beyond.x(), beyond.y());
-    EXPECT_THAT(verdict(p, table, near),
-                HasSubstr("ball " + std::to_string(balls.size()) + " is beyond cushion " +
-                          std::to_string(k)));
+    EXPECT_THAT(verdict(p, table, near), HasSubstr("ball " + std::to_string(balls.size()) +
+                                                   " is beyond cushion " + std::to_string(k)));
   }
   for (std::size_t k = 0; k < table.jaws.size(); ++k) {
     const JawArc& jaw = table.jaws[k];
@@ -556,11 +555,12 @@ TEST(ShotSimulator, ACrowdOfRestingBallsTheShotNeverReachesChangesNothing) {
     EXPECT_GE(many.skipped_predictions - few.skipped_predictions,
               static_cast<long>(crowd.size() * (crowd.size() - 1) / 2))
         << "the crowd's pairs are skipped";
-    // The shot must pass close to the crowd for the check to mean anything: within 3R of a row.
+    // The premise: the moving balls stay more than 2R in y from the nearest rows (at |y| = 0.15).
     double closest = 1e9;
     for (const Event& e : few.events)
-      for (const BallState& b : e.before) closest = std::min(closest, 0.15 - std::abs(b.position.y()));
-    EXPECT_GT(closest, R) << "the shot never touches the rows";
+      for (const BallState& b : e.before)
+        closest = std::min(closest, 0.15 - std::abs(b.position.y()));
+    EXPECT_GT(closest, 2 * R) << "the shot never touches the rows";
   }
 }
 
