@@ -304,7 +304,7 @@ constexpr double kSafeInteriorMargin_m = 1e-6;
 // the shipped tables' rail normals are axis-aligned to rounding).
 constexpr double kAxisAlignedNormal = 1e-9;
 // Below this many balls the safe interior costs more than it saves (it costs about as much as the
-// full cushion and jaw checks of a few balls).
+// full cushion and jaw checks of some 8 balls on a pool table, by instruction counts).
 constexpr std::size_t kSafeInteriorMinBalls = 8;
 
 // A box of ball centres that no cushion or jaw check can reject, so that balls inside it skip those
