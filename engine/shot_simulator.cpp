@@ -2,8 +2,10 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <tuple>
 
@@ -197,6 +199,165 @@ Box sweptBox(const physics::PositionQuadratic& path, double duration, double R) 
   return box.inflated(R + kBoxMargin_m);
 }
 
+// The grid's cells are this many ball radii wide at least: a box swept in a short step covers a
+// few cells, and a cell holds a few resting balls at most.
+constexpr double kGridCellRadii = 4;
+// The grid has at most about this many cells per ball (its cells widen on a sparse, wide spread of
+// balls), so that it costs O(balls) to build.
+constexpr double kGridCellsPerBall = 2;
+
+// The balls at rest when the shot starts (numbers `indices` of `balls`), by the cells of a uniform
+// grid of their centres: a moving ball looks only in the cells its swept box reaches instead of at
+// every ball, so a crowd of resting balls costs little per event. Built once per shot: a ball that
+// moves later is left for the caller to skip.
+class RestingGrid {
+ public:
+  RestingGrid(const std::vector<int>& indices, const std::vector<BallState>& balls, double R) {
+    if (indices.empty()) return;
+    Eigen::AlignedBox2d extent;
+    for (int i : indices) extent.extend(balls[i].position);
+    origin_m_ = extent.min();
+    const Eigen::Vector2d size = extent.sizes();
+    const double per_cell = static_cast<double>(indices.size()) * kGridCellsPerBall;
+    cell_m_ = std::max({kGridCellRadii * R, std::sqrt(size.x() * size.y() / per_cell),
+                        size.maxCoeff() / per_cell});
+    columns_ = cellOf(extent.max().x(), origin_m_.x(), kMaxCells) + 1;
+    rows_ = cellOf(extent.max().y(), origin_m_.y(), kMaxCells) + 1;
+    // Counting sort of the balls by cell: cell c holds members_[first_[c]] to
+    // members_[first_[c+1]).
+    std::vector<int> cell(indices.size());
+    first_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+      const Eigen::Vector2d& q = balls[indices[k]].position;
+      cell[k] =
+          cellOf(q.y(), origin_m_.y(), rows_) * columns_ + cellOf(q.x(), origin_m_.x(), columns_);
+      ++first_[cell[k] + 1];
+    }
+    for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
+    members_.resize(indices.size());
+    std::vector<int> filled(first_.begin(), first_.end() - 1);
+    for (std::size_t k = 0; k < indices.size(); ++k) members_[filled[cell[k]]++] = indices[k];
+  }
+
+  // Calls visit(i) once for every ball in the grid whose centre may lie within `reach` (m) of
+  // `box` (and for some farther ones).
+  template <class Visit>
+  void forEachNear(const Box& box, double reach, Visit visit) const {
+    if (members_.empty()) return;
+    const int x0 = cellOf(box.lo.x() - reach, origin_m_.x(), columns_);
+    const int x1 = cellOf(box.hi.x() + reach, origin_m_.x(), columns_);
+    const int y0 = cellOf(box.lo.y() - reach, origin_m_.y(), rows_);
+    const int y1 = cellOf(box.hi.y() + reach, origin_m_.y(), rows_);
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const int c = y * columns_ + x;
+        for (int k = first_[c]; k < first_[c + 1]; ++k) visit(members_[k]);
+      }
+    }
+  }
+
+ private:
+  static constexpr int kMaxCells = 1 << 20;  // per axis; far above what kGridCellsPerBall allows
+  // The cell along one axis holding coordinate q, clamped to [0, count): a box reaching beyond the
+  // grid (or not finite) covers the cells at its edge.
+  int cellOf(double q, double origin, int count) const {
+    const double c = (q - origin) / cell_m_;
+    if (!(c >= 1)) return 0;
+    if (c >= count - 1) return count - 1;
+    return static_cast<int>(c);  // truncation: the floor, c being >= 1 here
+  }
+
+  Eigen::Vector2d origin_m_ = Eigen::Vector2d::Zero();
+  double cell_m_ = 1;
+  int columns_ = 0, rows_ = 0;
+  std::vector<int> first_;    // per cell, then one past the last: where its balls start in members_
+  std::vector<int> members_;  // ball numbers, cell by cell
+};
+
+// A convex polygon of at most kMaxClippedCorners corners, m: the box a half-strip is clipped from.
+// A box (4 corners) cut by three half-planes has at most 4 + 3 = 7.
+constexpr int kMaxClippedCorners = 8;
+struct ConvexPolygon {
+  std::array<Eigen::Vector2d, kMaxClippedCorners> corners;
+  int size = 0;
+};
+
+// The part of `polygon` where a.q <= b (Sutherland-Hodgman against one half-plane).
+ConvexPolygon clipped(const ConvexPolygon& polygon, const Eigen::Vector2d& a, double b) {
+  ConvexPolygon out;
+  for (int k = 0; k < polygon.size; ++k) {
+    const Eigen::Vector2d& p = polygon.corners[k];
+    const Eigen::Vector2d& q = polygon.corners[(k + 1) % polygon.size];
+    const double fp = a.dot(p) - b, fq = a.dot(q) - b;
+    if (fp <= 0) out.corners[out.size++] = p;
+    if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0))
+      out.corners[out.size++] = p + (fp / (fp - fq)) * (q - p);
+  }
+  return out;
+}
+
+// The safe interior below is built this far inside the cushion noses and checked with half this
+// margin to spare, m: far above the rounding of the checks' dot products (positions ~1 m, ~1e-16
+// m), far below anything that matters for which balls it admits.
+constexpr double kSafeInteriorMargin_m = 1e-6;
+// A cushion normal counts as along an axis when its other component is below this (unit vector;
+// the shipped tables' rail normals are axis-aligned to rounding).
+constexpr double kAxisAlignedNormal = 1e-9;
+// Below this many balls the safe interior costs more than it saves (it costs about as much as the
+// full cushion and jaw checks of some 8 balls on a pool table, by instruction counts).
+constexpr std::size_t kSafeInteriorMinBalls = 8;
+
+// A box of ball centres that no cushion or jaw check can reject, so that balls inside it skip those
+// checks (a crowded table then costs little per ball); empty when none is found. Its sides are the
+// axis-aligned cushion noses moved R inwards, within the table's extent. Every cushion's and jaw's
+// rejection region (a centre nearer than R in front of or anywhere behind a cushion, beside it; a
+// centre within the jaw's radius + R) is then checked against the whole box, grown by a margin,
+// and any that reaches into the box empties it.
+Eigen::AlignedBox2d safeInterior(const TableGeometry& table, double R,
+                                 const Eigen::AlignedBox2d& extent) {
+  Eigen::AlignedBox2d box = extent;
+  const double inset = R + kSafeInteriorMargin_m;
+  for (const CushionSegment& c : table.cushions) {
+    for (int axis = 0; axis < 2; ++axis) {
+      if (!(std::abs(c.inward_normal[1 - axis]) < kAxisAlignedNormal)) continue;
+      if (c.inward_normal[axis] > 0) {
+        box.min()[axis] =
+            std::max(box.min()[axis], std::max(c.start_m[axis], c.end_m[axis]) + inset);
+      } else {
+        box.max()[axis] =
+            std::min(box.max()[axis], std::min(c.start_m[axis], c.end_m[axis]) - inset);
+      }
+    }
+  }
+  // Non-finite geometry (which validation lets through) would make the clipping below meaningless.
+  if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite())
+    return Eigen::AlignedBox2d();
+  const double spare = kSafeInteriorMargin_m / 2;
+  for (const JawArc& jaw : table.jaws) {
+    const Eigen::Vector2d nearest = jaw.centre_m.cwiseMax(box.min()).cwiseMin(box.max());
+    const double clear = jaw.radius_m + R + spare;
+    if (!((nearest - jaw.centre_m).squaredNorm() >= clear * clear)) return Eigen::AlignedBox2d();
+  }
+  ConvexPolygon corners;
+  for (auto corner : {Eigen::AlignedBox2d::BottomLeft, Eigen::AlignedBox2d::BottomRight,
+                      Eigen::AlignedBox2d::TopRight, Eigen::AlignedBox2d::TopLeft})
+    corners.corners[corners.size++] = box.corner(corner);
+  for (const CushionSegment& c : table.cushions) {
+    // Rejected beside the cushion (0 <= s <= 1 along it) at a distance below R in front of it.
+    if (!c.start_m.allFinite() || !c.end_m.allFinite()) return Eigen::AlignedBox2d();
+    const Eigen::Vector2d along = c.end_m - c.start_m;
+    const double length = along.norm();
+    // (The box usually lies wholly in front of a cushion: the first cut then leaves nothing.)
+    ConvexPolygon reach =
+        clipped(corners, c.inward_normal, c.inward_normal.dot(c.start_m) + R + spare);
+    if (reach.size > 0) reach = clipped(reach, -along, -along.dot(c.start_m) + spare * length);
+    if (reach.size > 0)
+      reach = clipped(reach, along, along.dot(c.start_m) + along.squaredNorm() + spare * length);
+    if (reach.size > 0) return Eigen::AlignedBox2d();
+  }
+  return box;
+}
+
 }  // namespace
 
 void validateSimulationInput(const SimulationParams& p, const TableGeometry& table,
@@ -257,16 +418,23 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
   }
   // Overlaps by a sweep along x: only balls less than 2R apart in x can overlap (n log n, so that
   // a crowded table costs little).
-  std::vector<std::size_t> by_x(balls.size());
-  for (std::size_t i = 0; i < balls.size(); ++i) by_x[i] = i;
-  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
-    return std::make_pair(balls[a].position.x(), a) < std::make_pair(balls[b].position.x(), b);
+  struct Centre {
+    double x, y;
+    std::size_t ball;
+  };
+  std::vector<Centre> by_x(balls.size());  // by x, then by ball
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    by_x[i] = {balls[i].position.x(), balls[i].position.y(), i};
+  std::sort(by_x.begin(), by_x.end(), [](const Centre& a, const Centre& b) {
+    return a.x < b.x || (a.x == b.x && a.ball < b.ball);
   });
   for (std::size_t m = 0; m < by_x.size(); ++m) {
-    for (std::size_t k = m + 1;
-         k < by_x.size() && balls[by_x[k]].position.x() - balls[by_x[m]].position.x() < 2 * R;
-         ++k) {
-      const std::size_t i = std::max(by_x[m], by_x[k]), j = std::min(by_x[m], by_x[k]);
+    for (std::size_t k = m + 1; k < by_x.size() && by_x[k].x - by_x[m].x < 2 * R; ++k) {
+      // Balls 2R apart or more in y do not overlap: their distance is at least that (to a rounding
+      // far below kContactSlack_m), so the square root is not needed.
+      if (std::abs(by_x[k].y - by_x[m].y) >= 2 * R) continue;
+      const std::size_t i = std::max(by_x[m].ball, by_x[k].ball),
+                        j = std::min(by_x[m].ball, by_x[k].ball);
       const double gap = (balls[i].position - balls[j].position).norm() - 2 * R;
       if (gap < -kContactSlack_m) {
         physics::rejectValue(who(i) + " overlaps ball " + std::to_string(j) + ": their gap (m)",
@@ -285,6 +453,9 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
   };
   for (const JawArc& jaw : table.jaws) extendByCircle(jaw.centre_m, jaw.radius_m);
   for (const Circle& pocket : table.pockets) extendByCircle(pocket.centre_m, pocket.radius_m);
+  const Eigen::AlignedBox2d safe = !table.cushions.empty() && balls.size() >= kSafeInteriorMinBalls
+                                       ? safeInterior(table, R, extent)
+                                       : Eigen::AlignedBox2d();
   for (std::size_t i = 0; i < balls.size(); ++i) {
     if (!table.cushions.empty() && !extent.contains(balls[i].position)) {
       const Eigen::Vector2d& q = balls[i].position;
@@ -294,6 +465,7 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
                            "it must lie within [" + physics::valueText(extent.min()[axis]) + ", " +
                                physics::valueText(extent.max()[axis]) + "], the table's extent");
     }
+    if (safe.contains(balls[i].position)) continue;  // no cushion or jaw reaches it
     for (std::size_t k = 0; k < table.jaws.size(); ++k) {
       const JawArc& jaw = table.jaws[k];
       const double reach = jaw.radius_m + R - kContactSlack_m;
@@ -405,6 +577,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     Box box;
   };
   std::vector<Ball> balls(n);
+  std::vector<char> starts_at_rest(n, 0);  // no velocity and no spin at all at the start
   auto settle = [&](int i, double time_s) {
     Ball& b = balls[i];
     b.reference_time_s = time_s;
@@ -414,7 +587,18 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     b.box = b.moves ? sweptBox(b.path, b.change_dt_s, R) : Box::around(b.state.position, R);
   };
   for (int i = 0; i < n; ++i) {
-    balls[i].state = input[i];
+    Ball& b = balls[i];
+    b.state = input[i];
+    // A ball with no velocity and no spin at all is stationary, never changes state and stays
+    // where it is: exactly what settle() would get from the cloth-motion model (whose checks the
+    // input has passed), written directly because a crowd of resting balls would otherwise pay for
+    // those calls one by one.
+    if (b.state.velocity.isZero(0) && b.state.angular_velocity.isZero(0)) {
+      starts_at_rest[i] = 1;
+      b.path.constant_m = b.state.position;
+      b.box = Box::around(b.state.position, R);
+      continue;
+    }
     settle(i, 0);
   }
   // The path of ball i from time t on (a shift of its quadratic).
@@ -428,6 +612,9 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     return shifted;
   };
   std::vector<Box> cushion_boxes, jaw_boxes, pocket_boxes;
+  cushion_boxes.reserve(table.cushions.size());
+  jaw_boxes.reserve(table.jaws.size());
+  pocket_boxes.reserve(table.pockets.size());
   for (const CushionSegment& c : table.cushions)
     cushion_boxes.push_back(Box::spanning(c.start_m, c.end_m));
   for (const JawArc& jaw : table.jaws) jaw_boxes.push_back(Box::around(jaw.centre_m, jaw.radius_m));
@@ -442,7 +629,13 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
   // those are solved again. own: a ball's state change, cushion, jaw or pocket; pair_time: when
   // balls i < j touch, at [i * n + j]; next: each ball's earliest of its own and its pairs'.
   std::vector<Candidate> own(n), next(n);
-  std::vector<double> pair_time(static_cast<std::size_t>(n) * n, kInfinity);
+  // Left unset (filling n^2 entries would cost more than a whole shot among many resting balls):
+  // a pair's time is read only through `partners`, which lists only pairs whose time was written.
+  std::unique_ptr<double[]> pair_time(new double[static_cast<std::size_t>(n) * n]);
+  // Per ball, every ball it has a finite pair time with (and some it no longer has, and repeats;
+  // right after a ball changed and was predicted again, exactly those it has):
+  // what a ball's earliest candidate and a change of its motion need to look at, not every ball.
+  std::vector<std::vector<int>> partners(n);
   auto pairCandidate = [&](int i, int j) {
     if (i > j) std::swap(i, j);
     return Candidate{pair_time[static_cast<std::size_t>(i) * n + j], EventKind::BallBall, i, j};
@@ -568,29 +761,63 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     const physics::RootSearchResult hit = solve(gap, std::max(0.0, horizon));
     if (hit.outcome == physics::RootOutcome::Root)
       cached = absolute({hit.time, EventKind::BallBall, a, b}).dt_s;
+    if (cached < kInfinity) {
+      partners[a].push_back(b);
+      partners[b].push_back(a);
+    }
   };
-  // Ball k's earliest candidate, from scratch.
-  // Ball k's earliest candidate, from scratch. A pair's prediction is finite only while one of its
-  // balls moves (it is predicted again when either changes), so a resting ball looks only at the
-  // moving ones.
-  std::vector<int> movers;  // the balls that move now
+  // Ball k's earliest candidate, from scratch. Its list of partners is cleaned on the way (pairs
+  // since predicted empty and repeats dropped), so that it cannot grow with every event of a
+  // neighbour while ball k itself has none.
+  std::vector<char> listed(n, 0);  // in the cleaned list, by ball
   auto rescan = [&](int k) {
     Candidate best = own[k];
-    auto consider = [&](int j) {
+    std::vector<int>& list = partners[k];
+    std::size_t kept = 0;
+    for (std::size_t m = 0; m < list.size(); ++m) {
+      const int j = list[m];
       const Candidate c = pairCandidate(k, j);
-      if (j != k && c.dt_s < kInfinity && c < best) best = c;
-    };
-    if (balls[k].moves) {
-      for (int j = 0; j < n; ++j) consider(j);
-    } else {
-      for (int j : movers) consider(j);
+      if (!(c.dt_s < kInfinity) || listed[j]) continue;
+      listed[j] = 1;
+      list[kept++] = j;
+      if (c < best) best = c;
     }
+    list.resize(kept);
+    for (int j : list) listed[j] = 0;
     next[k] = best;
   };
+  // A pair's prediction is finite only while one of its balls moves (it is predicted again when
+  // either changes), so the next event is the earliest candidate of a ball that moves or has an
+  // event of its own ahead (a spinning ball's stop): only those "active" balls' earliest candidates
+  // are kept, and a resting ball costs nothing per event.
+  std::vector<int> active, movers;                     // movers: the active balls that move
+  std::vector<char> is_active(n, 0), rescanned(n, 0);  // rescanned: its candidate found anew
+  // The balls resting at the start, by place; those that come to rest later are looked at one by
+  // one (a few at most, in practice).
+  std::vector<int> initially_resting, resting_later;
+  for (int i = 0; i < n; ++i)
+    if (!balls[i].moves) initially_resting.push_back(i);
+  const RestingGrid resting_grid(initially_resting, input, R);
+  std::vector<char> in_grid(n, 0), is_resting_later(n, 0);
+  for (int i : initially_resting) in_grid[i] = 1;
+  int on_table = n;                  // balls not pocketed
+  std::vector<int> self_predicting;  // changed balls that predict their pairs with changed balls
 
   std::vector<int> changed;            // balls whose motion changed at the last event
-  std::vector<char> is_changed(n, 1);  // the same, by ball
-  for (int i = 0; i < n; ++i) changed.push_back(i);
+  std::vector<char> is_changed(n, 0);  // the same, by ball
+  // In the first pass every ball is new, but a ball exactly at rest has nothing to predict (no
+  // event of its own, and its pairs with the moving balls are predicted by those): it is only
+  // counted among the resting ones, so a crowd of them costs nothing there either.
+  long resting_from_start = 0;
+  for (int i = 0; i < n; ++i) {
+    if (starts_at_rest[i]) {
+      own[i] = Candidate{kInfinity, EventKind::StateChange, i};  // what predictOwn() would give
+      ++resting_from_start;
+      continue;
+    }
+    changed.push_back(i);
+    is_changed[i] = 1;
+  }
   bool first_pass = true;  // every ball is new; pairs of resting balls are left unpredicted
   for (long count = 0;; ++count) {
     if (count == p.max_events) {
@@ -601,6 +828,12 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     // Predict again what involves a ball that changed; each other ball's earliest candidate is
     // then updated with its new pairs, or found again if it was one of the stale ones.
     long resting = 0;  // first pass: balls at rest, whose pairs are skipped
+    // Every pair of a changed ball is predicted again (or left empty): clear the old ones.
+    for (int i : changed) {
+      for (int j : partners[i])
+        pair_time[static_cast<std::size_t>(std::min(i, j)) * n + std::max(i, j)] = kInfinity;
+      partners[i].clear();
+    }
     // Own events first: a pair is predicted only as far as both balls' paths hold.
     for (int i : changed) {
       if (!balls[i].pocketed) {
@@ -608,46 +841,88 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         continue;
       }
       own[i] = Candidate{};
-      for (int j = 0; j < n; ++j)
-        if (j != i)
-          pair_time[static_cast<std::size_t>(std::min(i, j)) * n + std::max(i, j)] = kInfinity;
     }
+    for (int i : changed) {
+      const bool now_active = !balls[i].pocketed && (balls[i].moves || own[i].dt_s < kInfinity);
+      if (now_active != static_cast<bool>(is_active[i])) {
+        is_active[i] = now_active;
+        if (now_active)
+          active.push_back(i);
+        else
+          active.erase(std::find(active.begin(), active.end(), i));
+      }
+      if (first_pass) continue;
+      // Its place in the grid no longer holds; at rest, it is looked at one by one.
+      in_grid[i] = 0;
+      if (!balls[i].moves && !balls[i].pocketed && !is_resting_later[i]) {
+        is_resting_later[i] = 1;
+        resting_later.push_back(i);
+      }
+    }
+    movers.clear();
+    for (int k : active)
+      if (balls[k].moves) movers.push_back(k);
+    // A pair of two changed balls is predicted once, by the lower-numbered one (or, in the first
+    // pass, by the moving one).
+    self_predicting.clear();
+    for (int i : changed)
+      if (!balls[i].pocketed && !(first_pass && !balls[i].moves)) self_predicting.push_back(i);
+    std::sort(self_predicting.begin(), self_predicting.end());
     for (int i : changed) {
       if (balls[i].pocketed) continue;
       if (first_pass && !balls[i].moves) {  // its pairs with resting balls: already empty
         ++resting;
         continue;
       }
-      for (int j = 0; j < n; ++j) {
-        if (j == i) continue;
-        // A pair of two changed balls is predicted once, by the lower-numbered one (or, in the
-        // first pass, by the moving one).
-        if (j < i && is_changed[j] && !(first_pass && !balls[j].moves)) continue;
+      // Ball i's pairs: with every ball that moves, and, if it moves, with the resting balls its
+      // swept box reaches. Every other ball on the table is a pair predictPair() would skip (both
+      // at rest, or boxes apart), counted as such.
+      long visited = 0;
+      auto visit = [&](int j) {
         predictPair(i, j);
+        ++visited;
+      };
+      for (int j : movers)
+        if (j != i && !(j < i && is_changed[j])) visit(j);
+      if (balls[i].moves) {
+        auto visitResting = [&](int j) {
+          if (balls[j].moves || balls[j].pocketed || !balls[j].box.overlaps(balls[i].box)) return;
+          if (j < i && is_changed[j] && !first_pass) return;
+          visit(j);
+        };
+        resting_grid.forEachNear(balls[i].box, R + kBoxMargin_m, [&](int j) {
+          if (in_grid[j]) visitResting(j);
+        });
+        for (int j : resting_later) visitResting(j);
       }
+      const long predicted_elsewhere =
+          std::lower_bound(self_predicting.begin(), self_predicting.end(), i) -
+          self_predicting.begin();
+      result.skipped_predictions += (on_table - 1) - predicted_elsewhere - visited;
     }
-    if (first_pass) result.skipped_predictions += resting * (resting - 1) / 2;
+    if (first_pass) {
+      resting += resting_from_start;
+      result.skipped_predictions += resting * (resting - 1) / 2;
+    }
     first_pass = false;
-    movers.clear();
-    for (int k = 0; k < n; ++k)
-      if (balls[k].moves && !balls[k].pocketed) movers.push_back(k);
-    for (int k = 0; k < n; ++k) {
-      bool stale =
+    for (int k : active) {
+      rescanned[k] =
           is_changed[k] ||
           (next[k].dt_s < kInfinity &&
            (is_changed[next[k].ball] || (next[k].other >= 0 && is_changed[next[k].other])));
-      if (stale) {
-        rescan(k);
-        continue;
-      }
-      for (int i : changed) {
+      if (rescanned[k]) rescan(k);
+    }
+    // The others gain the changed balls' new pairs (their finite ones: all in `partners` now).
+    for (int i : changed) {
+      for (int k : partners[i]) {
+        if (!is_active[k] || rescanned[k]) continue;
         const Candidate c = pairCandidate(k, i);
         if (c.dt_s < kInfinity && c < next[k]) next[k] = c;
       }
     }
     Candidate best;
-    for (const Candidate& c : next)
-      if (c.dt_s < kInfinity && c < best) best = c;
+    for (int k : active)
+      if (next[k].dt_s < kInfinity && next[k] < best) best = next[k];
     if (!(best.dt_s < kInfinity)) break;                 // every ball at rest or pocketed
     const double event_time = std::max(best.dt_s, now);  // rounding of absolute times
     for (int i : changed) is_changed[i] = 0;
@@ -689,6 +964,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
       case EventKind::Pocket:
         balls[best.ball].pocketed = true;
         balls[best.ball].pocket = best.index;
+        --on_table;
         break;
       case EventKind::Cushion:
       case EventKind::Jaw: {

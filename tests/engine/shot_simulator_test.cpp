@@ -3,8 +3,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "engine/ball_set.h"
 #include "engine/rack.h"
@@ -399,6 +401,195 @@ TEST(ShotSimulator, BadScenesAreRejectedWithTheValue) {
   SimulationParams wrong = p;
   wrong.cloth.radius_m = 0.03;
   EXPECT_THROW(simulate(wrong, table, {ballAt(0, 0)}), std::invalid_argument);
+}
+
+// What validation says of a set of balls: its message, or "accepted".
+std::string verdict(const SimulationParams& p, const TableGeometry& table,
+                    const std::vector<BallState>& balls) {
+  try {
+    validateSimulationInput(p, table, balls);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// A crowd of resting balls around the table's middle, in rows kCrowdSpacing_m apart (well over a
+// diameter): enough balls for validation to take its shortcut for balls far from every cushion.
+constexpr double kCrowdSpacing_m = 0.1;
+std::vector<BallState> crowdAroundTheMiddle(int columns, int rows) {
+  std::vector<BallState> crowd;
+  for (int c = 0; c < columns; ++c)
+    for (int r = 0; r < rows; ++r)
+      crowd.push_back(ballAt(kCrowdSpacing_m * (c - 0.5 * (columns - 1)),
+                             kCrowdSpacing_m * (r - 0.5 * (rows - 1))));
+  return crowd;
+}
+
+// A probe ball's verdict must not depend on how many other balls there are: alone (every cushion
+// and jaw checked for it) and as ball 0 of a crowd (which lets validation skip those checks for
+// balls in a safe interior), it is rejected with the same message or accepted, on every built-in
+// table. Probes lie just either side of where a cushion or a jaw begins to reject a ball, and at
+// random all over the table.
+TEST(ShotSimulator, ABallNearACushionOrJawGetsTheSameVerdictAloneAndInACrowd) {
+  const SimulationParams p = poolSimulationParams();
+  const double R = p.cushion.radius_m;
+  // Offsets (m) from the rejection boundary: below the 1e-9 m contact slack, and just beyond the
+  // margins (1e-6 m) a shortcut near the boundary might use.
+  const double offsets_m[] = {-1e-5, -2e-6, -1e-6, -1e-8, 0, 1e-8, 1e-6, 2e-6, 1e-5};
+  const std::vector<BallState> crowd = crowdAroundTheMiddle(7, 5);
+  const double clear_m = 1e-3;  // a crowd ball this much farther than 2R from the probe: no overlap
+  std::mt19937 random(7);
+  for (const std::string& name : builtinTableNames()) {
+    const Table built_in = builtinTable(name);
+    const TableGeometry table = geometryOf(built_in);
+    std::vector<Eigen::Vector2d> probes;
+    for (const CushionSegment& c : table.cushions) {
+      for (double s : {0.0, 0.02, 0.5, 0.98, 1.0}) {  // along the cushion
+        for (double offset : offsets_m)
+          probes.push_back(c.start_m + s * (c.end_m - c.start_m) + (R + offset) * c.inward_normal);
+      }
+    }
+    for (const JawArc& jaw : table.jaws) {
+      for (double f : {0.0, 0.5, 1.0}) {  // across its angular range
+        const double angle = jaw.start_angle_rad + f * (jaw.end_angle_rad - jaw.start_angle_rad);
+        for (double offset : offsets_m) {
+          probes.push_back(jaw.centre_m + (jaw.radius_m + R + offset) *
+                                              Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+        }
+      }
+    }
+    std::uniform_real_distribution<double> x(-0.6 * built_in.length_m, 0.6 * built_in.length_m);
+    std::uniform_real_distribution<double> y(-0.6 * built_in.width_m, 0.6 * built_in.width_m);
+    for (int k = 0; k < 2000; ++k) probes.push_back({x(random), y(random)});
+    int rejected = 0, accepted = 0;
+    for (const Eigen::Vector2d& q : probes) {
+      std::vector<BallState> alone = {ballAt(q.x(), q.y())};
+      std::vector<BallState> crowded = alone;
+      for (const BallState& b : crowd)
+        if ((b.position - q).norm() > 2 * R + clear_m) crowded.push_back(b);
+      ASSERT_GE(crowded.size(), 30u) << "a crowd";
+      const std::string expected = verdict(p, table, alone);
+      EXPECT_EQ(verdict(p, table, crowded), expected) << name << " at " << q.transpose();
+      ++(expected == "accepted" ? accepted : rejected);
+    }
+    EXPECT_GT(rejected, 100) << name;
+    EXPECT_GT(accepted, 100) << name;
+  }
+}
+
+// The same in closed form on one table: a ball R - 1 um in front of a straight cushion's middle is
+// beyond it, one R + 1 um in front is accepted; a ball 1 um closer to a jaw's centre than its
+// radius plus R, within its range, is inside it; so many balls are all checked.
+TEST(ShotSimulator, BallsJustBeyondACushionOrInsideAJawAreRejectedInACrowd) {
+  const SimulationParams p = poolSimulationParams();
+  const double R = p.cushion.radius_m, step_m = 1e-6;
+  const TableGeometry table = geometryOf(builtinTable("pool-9ft"));
+  std::vector<BallState> balls = crowdAroundTheMiddle(7, 5);
+  for (std::size_t k = 0; k < table.cushions.size(); ++k) {
+    const CushionSegment& c = table.cushions[k];
+    const Eigen::Vector2d middle = 0.5 * (c.start_m + c.end_m);
+    std::vector<BallState> near = balls;
+    const Eigen::Vector2d inside = middle + (R + step_m) * c.inward_normal;
+    near.push_back(ballAt(inside.x(), inside.y()));
+    EXPECT_EQ(verdict(p, table, near), "accepted") << "cushion " << k;
+    const Eigen::Vector2d beyond = middle + (R - step_m) * c.inward_normal;
+    near.back() = ballAt(beyond.x(), beyond.y());
+    EXPECT_THAT(verdict(p, table, near), HasSubstr("ball " + std::to_string(balls.size()) +
+                                                   " is beyond cushion " + std::to_string(k)));
+  }
+  for (std::size_t k = 0; k < table.jaws.size(); ++k) {
+    const JawArc& jaw = table.jaws[k];
+    const double angle = 0.5 * (jaw.start_angle_rad + jaw.end_angle_rad);
+    std::vector<BallState> near = balls;
+    const Eigen::Vector2d q = jaw.centre_m + (jaw.radius_m + R - step_m) *
+                                                 Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    near.push_back(ballAt(q.x(), q.y()));
+    EXPECT_THAT(verdict(p, table, near), HasSubstr("ball " + std::to_string(balls.size()) +
+                                                   " is inside jaw " + std::to_string(k)));
+  }
+}
+
+// Resting balls the shot never reaches change nothing: the cue ball's events and end are the same,
+// bit for bit, with and without a crowd of them, and the crowd stays where it was. The shot runs
+// along the table's long axis between two rows of balls, off the cushions and back; other shots
+// strike ball 1, placed along that axis, so that balls start moving and stop among the crowd.
+TEST(ShotSimulator, ACrowdOfRestingBallsTheShotNeverReachesChangesNothing) {
+  const SimulationParams p = poolSimulationParams();
+  const double R = p.cushion.radius_m;
+  const TableGeometry table = geometryOf(builtinTable("pool-9ft"));
+  std::vector<BallState> crowd;
+  for (int c = 0; c < 10; ++c) {
+    for (double y : {-0.45, -0.3, -0.15, 0.15, 0.3, 0.45})
+      crowd.push_back(ballAt(-1.0 + 0.2222 * c, y));
+  }
+  const BallState cue = ballAt(-1.1, 0, 2.5, 0);  // no spin: every ball stays on y = 0
+  std::vector<std::vector<BallState>> shots = {{cue}};
+  for (int k = 0; k <= 8; ++k) shots.push_back({cue, ballAt(-0.7 + 0.05 * k, 0)});  // straight on
+  for (const std::vector<BallState>& shot : shots) {
+    std::vector<BallState> crowded = shot;
+    crowded.insert(crowded.end(), crowd.begin(), crowd.end());
+    const SimulationResult few = simulate(p, table, shot);
+    const SimulationResult many = simulate(p, table, crowded);
+    ASSERT_EQ(many.events.size(), few.events.size());
+    for (std::size_t e = 0; e < few.events.size(); ++e) {
+      EXPECT_EQ(many.events[e].time_s, few.events[e].time_s);
+      EXPECT_EQ(many.events[e].kind, few.events[e].kind);
+      EXPECT_EQ(many.events[e].ball, few.events[e].ball);
+      EXPECT_EQ(many.events[e].other, few.events[e].other);
+      EXPECT_EQ(many.events[e].index, few.events[e].index);
+      ASSERT_EQ(many.events[e].after.size(), few.events[e].after.size());
+      for (std::size_t b = 0; b < few.events[e].after.size(); ++b) {
+        EXPECT_EQ(many.events[e].after[b].position, few.events[e].after[b].position);
+        EXPECT_EQ(many.events[e].after[b].velocity, few.events[e].after[b].velocity);
+        EXPECT_EQ(many.events[e].after[b].angular_velocity,
+                  few.events[e].after[b].angular_velocity);
+      }
+    }
+    for (std::size_t i = 0; i < shot.size(); ++i) {
+      EXPECT_EQ(many.final_balls[i].state.position, few.final_balls[i].state.position);
+      EXPECT_EQ(many.final_balls[i].pocketed, few.final_balls[i].pocketed);
+    }
+    for (std::size_t i = shot.size(); i < crowded.size(); ++i)
+      EXPECT_EQ(many.final_balls[i].state.position, crowded[i].position) << "ball " << i;
+    EXPECT_GE(many.skipped_predictions - few.skipped_predictions,
+              static_cast<long>(crowd.size() * (crowd.size() - 1) / 2))
+        << "the crowd's pairs are skipped";
+    // The premise: the moving balls stay more than 2R in y from the nearest rows (at |y| = 0.15).
+    double closest = 1e9;
+    for (const Event& e : few.events)
+      for (const BallState& b : e.before)
+        closest = std::min(closest, 0.15 - std::abs(b.position.y()));
+    EXPECT_GT(closest, 2 * R) << "the shot never touches the rows";
+  }
+}
+
+// A ball that has come to rest is still there to be hit: ball 1 rolls a mm and stops, ball 0,
+// rolling the other way, comes off the end cushion after that and strikes it along the same line
+// (among a crowd of resting balls that neither reaches), and ball 1 moves off again.
+TEST(ShotSimulator, ABallThatCameToRestIsStillHit) {
+  const SimulationParams p = poolSimulationParams();
+  const TableGeometry table = geometryOf(builtinTable("pool-9ft"));
+  std::vector<BallState> balls = {ballAt(-0.8, 0, -2.0, 0), ballAt(-0.2, 0, 0.02, 0)};
+  for (int c = 0; c < 10; ++c) {
+    for (double y : {-0.3, 0.3}) balls.push_back(ballAt(-1.0 + 0.2222 * c, y));
+  }
+  const SimulationResult r = simulate(p, table, balls);
+  double stopped_s = -1, struck_s = -1, cushion_s = -1;
+  for (const Event& e : r.events) {
+    if (e.kind == EventKind::Cushion && e.ball == 0 && cushion_s < 0) cushion_s = e.time_s;
+    if (e.kind == EventKind::StateChange && e.ball == 1 && e.after[0].velocity.isZero(0) &&
+        stopped_s < 0)
+      stopped_s = e.time_s;
+    if (e.kind == EventKind::BallBall && e.ball == 0 && e.other == 1 && struck_s < 0)
+      struck_s = e.time_s;
+  }
+  ASSERT_GT(stopped_s, 0) << "ball 1 stops";
+  EXPECT_GT(cushion_s, stopped_s) << "before ball 0 comes off the cushion";
+  EXPECT_GT(struck_s, cushion_s) << "and is struck afterwards";
+  EXPECT_GT(r.final_balls[1].state.position.x(), -0.15) << "and moves on";
+  for (std::size_t i = 2; i < balls.size(); ++i)
+    EXPECT_EQ(r.final_balls[i].state.position, balls[i].position) << "ball " << i;
 }
 
 TEST(ShotSimulator, AShotThatNeedsTooManyEventsStopsWithAnError) {
