@@ -184,6 +184,8 @@ SceneRun runScene(const Scene& scene, bool record_trajectories) {
   SceneRun run;
   run.strike = physics::strikeCueBall(cueStrikeParamsFor(scene), scene.shot);
   std::vector<physics::BallState> balls;
+  balls.reserve(scene.balls.size());
+  run.ball_ids.reserve(scene.balls.size());
   for (const PlacedBall& b : scene.balls) {
     physics::BallState state;
     state.position = b.position_m;

@@ -470,6 +470,8 @@ class ExactImpact {
   bool creepDirection(int k, Laws laws, const Eigen::Vector2d& guess,
                       Eigen::Vector2d* result) const {
     if (clothCreepDirection(k, laws, result)) return true;
+    const AffineNewton affine = creepDirectionAffineNewton(k, laws, guess, result);
+    if (affine != AffineNewton::NotAffine) return affine == AffineNewton::Found;
     laws.stick[k] = false;
     auto turn = [&](double phi, double* growth) {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
@@ -499,6 +501,45 @@ class ExactImpact {
       }
     }
     return false;
+  }
+
+  // phi* by Newton's method when the slip rate is affine in the friction direction d, r(d) = r0 +
+  // W d (the nose's, whether the cloth slides or sticks): the turn cross(d, r(d)) and its slope in
+  // the angle, cross(d', r(d)) + cross(d, W d') with d' = d turned a right angle, are exact from r0
+  // and W, so an iteration costs no rate evaluation and no sine or cosine (d is turned by
+  // normalizing d + dphi d'). NotAffine when r is not affine here (checked at -d as in
+  // creepDirectionAffine); NotFound when Newton does not reach a direction along which the slip
+  // grows.
+  enum class AffineNewton { Found, NotFound, NotAffine };
+  AffineNewton creepDirectionAffineNewton(int k, Laws laws, const Eigen::Vector2d& guess,
+                                          Eigen::Vector2d* result) const {
+    if (k != 0) return AffineNewton::NotAffine;  // the cloth's is rational while the nose sticks
+    laws.stick[k] = false;
+    auto rateAlong = [&](const Eigen::Vector2d& d) {
+      laws.direction[k] = d;
+      return slipRate(k, frictionFor(laws));
+    };
+    const Eigen::Vector2d r0 = rateAlong(Eigen::Vector2d::Zero());
+    Eigen::Matrix2d W;
+    W.col(0) = rateAlong(Eigen::Vector2d::UnitX()) - r0;
+    W.col(1) = rateAlong(Eigen::Vector2d::UnitY()) - r0;
+    const Eigen::Vector2d check = rateAlong(-Eigen::Vector2d::UnitX());
+    if (!((check - (r0 - W.col(0))).norm() <= kAffineCheckRelative * (r0.norm() + W.col(0).norm())))
+      return AffineNewton::NotAffine;
+    Eigen::Vector2d d = guess.normalized();
+    for (int it = 0; it < kMaxCreepIterations; ++it) {
+      const Eigen::Vector2d r = r0 + W * d, across(-d.y(), d.x());
+      const double slope = cross(across, r) + cross(d, W * across);
+      if (!(slope != 0)) break;
+      const double change = std::clamp(-cross(d, r) / slope, -kCreepMaxTurn, kCreepMaxTurn);
+      d = (d + change * across).normalized();
+      if (std::abs(change) <= kCreepAngleTolerance) {
+        if (!((r0 + W * d).dot(d) > 0)) break;
+        *result = d;
+        return AffineNewton::Found;
+      }
+    }
+    return AffineNewton::NotFound;
   }
 
   // phi* in closed form when the slip rate is affine in the friction direction d, r(d) = r0 + W d
@@ -974,6 +1015,8 @@ class ExactImpact {
       landed->rate_at_end = k1;
       return true;
     }
+    // Due where the step ends (a step cut to land on it, as an approaching slip's is): no trials.
+    if (g_hi >= -tolerance_g && full.error <= 1) return true;
     auto newton = [](double from, double g, double slope) {
       return slope < 0 ? from - g / slope : -1.0;  // -1: outside any bracket, so not taken
     };
