@@ -7,7 +7,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <initializer_list>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -75,14 +78,40 @@ struct BallRecord {
   int pocket = -1;  // the pocket it fell into (TableGeometry::pockets), when pocketed
 };
 
+// The states of the balls an event involves (one, or two for a ball-ball contact), held in place:
+// an event allocates nothing (two vectors per event were a tenth of a break's time).
+class EventBalls {
+ public:
+  static constexpr std::size_t kCapacity = 2;
+  EventBalls() = default;
+  EventBalls(std::initializer_list<physics::BallState> states) {
+    for (const physics::BallState& s : states) push_back(s);
+  }
+  void push_back(const physics::BallState& state) {
+    if (size_ == kCapacity) throw std::logic_error("an event involves at most two balls");
+    states_[size_++] = state;
+  }
+  void clear() { size_ = 0; }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const physics::BallState& operator[](std::size_t i) const { return states_[i]; }
+  physics::BallState& operator[](std::size_t i) { return states_[i]; }
+  const physics::BallState* begin() const { return states_.data(); }
+  const physics::BallState* end() const { return states_.data() + size_; }
+
+ private:
+  std::array<physics::BallState, kCapacity> states_{};
+  std::size_t size_ = 0;
+};
+
 struct Event {
   double time_s = 0;
   EventKind kind = EventKind::StateChange;
   int ball = 0;
-  int other = -1;                          // BallBall: the second ball
-  int index = -1;                          // Cushion: the cushion; Pocket: the pocket
-  std::vector<physics::BallState> before;  // the balls involved, just before (ball, then other)
-  std::vector<physics::BallState> after;   // and just after
+  int other = -1;     // BallBall: the second ball
+  int index = -1;     // Cushion: the cushion; Pocket: the pocket
+  EventBalls before;  // the balls involved, just before (ball, then other)
+  EventBalls after;   // and just after
 };
 
 // A ball's path as its exact closed-form pieces: from each piece's start time the ball moves as
