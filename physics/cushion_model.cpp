@@ -51,15 +51,17 @@ void validateCushionParams(const CushionParams& p) {
     rejectValue("cloth friction mu_s", p.cloth_friction, "it must lie in [0, 1)");
   }
   // The normal velocity must fall at every instant whatever the slip directions, or the cushion
-  // could not stop the ball: cos th - mu_w sin th - mu_s (sin th + mu_w cos th) > 0.
+  // could not stop the ball: cos th - mu_w sin th - mu_s (sin th + mu_w cos th) > 0, with a margin
+  // (kMinNormalRateShare) so that it cannot nearly hold it either.
   const double worst_normal_rate =
       c - p.cushion_friction * s - p.cloth_friction * (s + p.cushion_friction * c);
-  if (!(worst_normal_rate > 0)) {
+  if (!(worst_normal_rate >= kMinNormalRateShare * c)) {
     rejectValue("cloth friction mu_s", p.cloth_friction,
-                "with mu_w = " + valueText(p.cushion_friction) +
-                    " and sin(theta) = " + valueText(s) + " it must be below " +
-                    valueText((c - p.cushion_friction * s) / (s + p.cushion_friction * c)) +
-                    ", or friction could hold the ball against the cushion");
+                "with mu_w = " + valueText(p.cushion_friction) + " and sin(theta) = " +
+                    valueText(s) + " it must be at most " +
+                    valueText((c * (1 - kMinNormalRateShare) - p.cushion_friction * s) /
+                              (s + p.cushion_friction * c)) +
+                    ", or friction could (nearly) hold the ball against the cushion");
   }
 }
 

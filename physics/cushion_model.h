@@ -39,6 +39,13 @@ inline constexpr double kMaxBallRadius_m = 1.0;
 // and the solvers' step counts grow like 1/cos theta without bound (found by fuzzing: the paper
 // scheme at h = 1.99999 R). Real cushions sit near 15-25 deg.
 inline constexpr double kMaxNoseSinTheta = 0.98480775301220806;  // sin(80 deg)
+// The least share of the frictionless push-back rate (cos theta) the cushion must keep whatever
+// the slip directions: cos th - mu_w sin th - mu_s (sin th + mu_w cos th) >= this x cos th. Near 0
+// friction nearly holds the ball against the cushion, restitution needs an impulse that grows
+// without bound, and the exact solver exhausted its step budget (found by fuzzing: mu_w = mu_s =
+// 1/3 at sin theta = 0.8, within 1e-6 of the bound; at 1e-3 it took 8800 evaluations, at 1e-2
+// 2000). Real tables keep about 0.8.
+inline constexpr double kMinNormalRateShare = 1e-2;
 // The ball masses they accept, kg: cue-sport balls weigh 0.1 to 0.3 kg; subnormal masses (found by
 // fuzzing: 1e-309 kg) stalled the ball-ball integration the same way.
 inline constexpr double kMinBallMass_kg = 1e-3;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/cushion_exact_solver.h"
 #include "tests/physics/cushion_test_support.h"
 #include "tests/physics/rejection_test_support.h"
 
@@ -362,6 +363,37 @@ TEST(CushionModelValidation, RejectsClothFrictionThatCouldHoldTheBallAgainstTheC
   expectRejected([p] { validateCushionParams(p); }, {"mu_s = 0.99 ", "mu_w"});
 }
 
+// Regression (found by fuzzing): within 1e-6 of that bound friction nearly holds the ball, the
+// rebound needs an impulse that grows without bound and the exact solver ran out of steps. A margin
+// of kMinNormalRateShare of cos theta is required; just inside it the impact solves.
+TEST(CushionModelValidation, RejectsFrictionThatCouldNearlyHoldTheBallAgainstTheCushion) {
+  CushionParams p;
+  p.mass_kg = 0.19967217720106065;
+  p.radius_m = 0.017411764705882352;
+  p.contact_height_m = 0.031341176470588233;  // sin theta = 0.8
+  p.restitution = 0.8;
+  p.cushion_friction = 1.0 / 3;
+  const double s = contactSinTheta(p), c = std::sqrt(1 - s * s);
+  auto clothFrictionAtShare = [&](double share) {  // the margin as a share of cos theta
+    return (c * (1 - share) - p.cushion_friction * s) / (s + p.cushion_friction * c);
+  };
+  BallVelocity in;  // the fuzzer's ball: fast sidespin and topspin
+  in.v = {0.92156862745098045, 2.9607843591274658, 0};
+  in.w = {30.718954248366018, 30.719333219043747, 166.66666666666669};
+  p.cloth_friction = 0.33333276487731672;  // the fuzzer's: a margin of about 1e-6 cos theta
+  ASSERT_LT(c - p.cushion_friction * s - p.cloth_friction * (s + p.cushion_friction * c),
+            kMinNormalRateShare * c);
+  expectRejected([p] { validateCushionParams(p); }, {"mu_s = 0.3333327648773167 ", "mu_w"});
+  expectRejected([p, in] { solveCushionImpactExact(p, in); }, {"mu_s"});
+  p.cloth_friction = clothFrictionAtShare(0.5 * kMinNormalRateShare);
+  EXPECT_THROW(validateCushionParams(p), std::invalid_argument);
+  p.cloth_friction = clothFrictionAtShare(1.001 * kMinNormalRateShare);
+  EXPECT_NO_THROW(validateCushionParams(p));
+  const CushionImpactResult r = solveCushionImpactExact(p, in);
+  EXPECT_LT(r.after.v.y(), 0);
+  EXPECT_LE(kineticEnergy(p, r.after), kineticEnergy(p, in));
+}
+
 TEST(CushionModelValidation, RejectsNonFiniteParameters) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
@@ -427,8 +459,7 @@ TEST(CushionModelValidation, RejectsSpeedsAndSpinsBeyondTheBounds) {
   expectRejected([fast] { validateIncomingBall(fast); }, {"v_y", "at most 1000"});
   BallVelocity spinning = ball;
   spinning.w.x() = 2 * kMaxBallSpin_radps;
-  expectRejected([spinning] { validateIncomingBall(spinning); },
-                 {"w_x", "2e+06", "at most 1e+06"});
+  expectRejected([spinning] { validateIncomingBall(spinning); }, {"w_x", "2e+06", "at most 1e+06"});
   // Regression (found by fuzzing): v_y = 5e-324 m/s stalled the exact solver (zero first step).
   BallVelocity creeping = ball;
   creeping.v.y() = std::numeric_limits<double>::denorm_min();
