@@ -26,10 +26,14 @@ struct BenchShotsFlags {
   int random_shots = 1000;  // random single shots
 };
 
+// Random shots run untimed before the timed pass (as each scene runs once untimed first).
+constexpr std::size_t kWarmUpShots = 50;
+
 // Median wall time of simulating `scene` (microseconds) and its event count.
 std::pair<double, std::size_t> timeScene(const engine::Scene& scene, int repeat) {
   std::vector<double> times;
   std::size_t events = 0;
+  engine::runScene(scene);  // untimed warm-up: caches and the clock frequency settle first
   for (int i = 0; i < repeat; ++i) {
     const auto start = std::chrono::steady_clock::now();
     const engine::SceneRun run = engine::runScene(scene);
@@ -86,6 +90,8 @@ void runBenchShots(const BenchShotsFlags& flags) {
     table << f.stem().string() << ',' << std::setprecision(4) << us << ',' << events << '\n';
   }
   const std::vector<engine::Scene> shots = randomShots(flags.random_shots);
+  for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i)
+    engine::runScene(shots[i]);  // untimed warm-up, as for the scenes
   std::vector<double> times, events;
   const auto all_start = std::chrono::steady_clock::now();
   for (const engine::Scene& s : shots) {
