@@ -1138,7 +1138,8 @@ class ExactImpact {
   // located instants (the start, the phase ends) a change is recorded at the end of the step in
   // which it happened.
   void reportModes(const State& z) {
-    const Laws laws = lawsAt(slips(z), nullptr);
+    Laws laws;  // needed only for a held contact (any other one slips)
+    if (held(0) || held(1)) laws = lawsAt(slips(z), nullptr);
     for (int k = 0; k < 2; ++k) {
       if (contacts_[k].frictionless) continue;
       const ContactMode mode = held(k) && laws.stick[k] ? ContactMode::Stick : ContactMode::Slip;
@@ -1151,8 +1152,7 @@ class ExactImpact {
   // Holds contact k, whose slip has vanished: the leftover (below the vanishing threshold) is
   // removed, and the search for phi* gets a first guess over the whole circle. After an accepted
   // step: counts how long each slipping contact's slip has stayed small.
-  void countSmallSlips(const State& z) {
-    const std::array<Eigen::Vector2d, 2> u = slips(z);
+  void countSmallSlips(const std::array<Eigen::Vector2d, 2>& u) {
     for (int k = 0; k < 2; ++k) {
       const bool small = slipping(k) && u[k].norm() <= kStagnantSlipMultiple * vanished_slip_;
       contacts_[k].small_slip_steps = small ? contacts_[k].small_slip_steps + 1 : 0;
@@ -1260,8 +1260,8 @@ class ExactImpact {
     return left / fall;
   }
 
-  bool updateApproaches(const State& z, State* rate_here, double* h) {
-    const std::array<Eigen::Vector2d, 2> u = slips(z);
+  bool updateApproaches(const State& z, const std::array<Eigen::Vector2d, 2>& u, State* rate_here,
+                        double* h) {
     const State& r = *rate_here;
     const std::array<Eigen::Vector2d, 2> change = slipChanges(r);  // du/dtau
     bool changed = false;
@@ -1288,6 +1288,7 @@ class ExactImpact {
 
   // After an accepted step: held contacts remember where phi* was (the next step's first guess).
   void updateCreepGuesses(const State& z) {
+    if (!held(0) && !held(1)) return;
     const Laws laws = lawsAt(slips(z), nullptr);
     for (int k = 0; k < 2; ++k) {
       if (held(k) && !laws.stick[k]) contacts_[k].creep = laws.direction[k];
@@ -1468,8 +1469,9 @@ CushionImpactResult ExactImpact::run() {
         z = step.z;
         k1 = step.rate_at_end;
         updateCreepGuesses(z);
-        countSmallSlips(z);
-        updateApproaches(z, &k1, &h);
+        const std::array<Eigen::Vector2d, 2> u_end = slips(z);
+        countSmallSlips(u_end);
+        updateApproaches(z, u_end, &k1, &h);
         reportModes(z);
         if (tracing) sample(z);
         // Predictive control (Gustafsson): where the accepted steps' errors follow a trend (a slip
@@ -1554,7 +1556,7 @@ CushionImpactResult ExactImpact::run() {
     reportModes(z);
     if (tracing && length > 0) sample(z);
     k1 = rate(z);
-    updateApproaches(z, &k1, &h);
+    updateApproaches(z, slips(z), &k1, &h);
     if (!phase_ends) continue;
     if (!compressing_) {
       result_.final_impulse_Ns = z[kP];
