@@ -503,29 +503,35 @@ class ExactImpact {
     return false;
   }
 
-  // phi* by Newton's method when the slip rate is affine in the friction direction d, r(d) = r0 +
-  // W d (the nose's, whether the cloth slides or sticks): the turn cross(d, r(d)) and its slope in
-  // the angle, cross(d', r(d)) + cross(d, W d') with d' = d turned a right angle, are exact from r0
-  // and W, so an iteration costs no rate evaluation and no sine or cosine (d is turned by
-  // normalizing d + dphi d'). NotAffine when r is not affine here (checked at -d as in
-  // creepDirectionAffine); NotFound when Newton does not reach a direction along which the slip
-  // grows.
-  enum class AffineNewton { Found, NotFound, NotAffine };
-  AffineNewton creepDirectionAffineNewton(int k, Laws laws, const Eigen::Vector2d& guess,
-                                          Eigen::Vector2d* result) const {
-    if (k != 0) return AffineNewton::NotAffine;  // the cloth's is rational while the nose sticks
+  // Contact k's slip rate as r(d) = r0 + W d in its sliding direction d, from the rates at d = 0,
+  // x and y; false when it is not affine (the rate at -x misses r0 - W x by more than rounding).
+  bool affineSlipRate(int k, Laws laws, Eigen::Vector2d* r0, Eigen::Matrix2d* W) const {
     laws.stick[k] = false;
     auto rateAlong = [&](const Eigen::Vector2d& d) {
       laws.direction[k] = d;
       return slipRate(k, frictionFor(laws));
     };
-    const Eigen::Vector2d r0 = rateAlong(Eigen::Vector2d::Zero());
-    Eigen::Matrix2d W;
-    W.col(0) = rateAlong(Eigen::Vector2d::UnitX()) - r0;
-    W.col(1) = rateAlong(Eigen::Vector2d::UnitY()) - r0;
+    *r0 = rateAlong(Eigen::Vector2d::Zero());
+    W->col(0) = rateAlong(Eigen::Vector2d::UnitX()) - *r0;
+    W->col(1) = rateAlong(Eigen::Vector2d::UnitY()) - *r0;
     const Eigen::Vector2d check = rateAlong(-Eigen::Vector2d::UnitX());
-    if (!((check - (r0 - W.col(0))).norm() <= kAffineCheckRelative * (r0.norm() + W.col(0).norm())))
-      return AffineNewton::NotAffine;
+    return (check - (*r0 - W->col(0))).norm() <=
+           kAffineCheckRelative * (r0->norm() + W->col(0).norm());
+  }
+
+  // phi* by Newton's method when the slip rate is affine in the friction direction d, r(d) = r0 +
+  // W d (the nose's, whether the cloth slides or sticks): the turn cross(d, r(d)) and its slope in
+  // the angle, cross(d', r(d)) + cross(d, W d') with d' = d turned a right angle, are exact from r0
+  // and W, so an iteration costs no rate evaluation and no sine or cosine (d is turned by
+  // normalizing d + dphi d'). NotAffine when r is not affine here (affineSlipRate); NotFound when
+  // Newton does not reach a direction along which the slip grows.
+  enum class AffineNewton { Found, NotFound, NotAffine };
+  AffineNewton creepDirectionAffineNewton(int k, Laws laws, const Eigen::Vector2d& guess,
+                                          Eigen::Vector2d* result) const {
+    if (k != 0) return AffineNewton::NotAffine;  // the cloth's is rational while the nose sticks
+    Eigen::Vector2d r0;
+    Eigen::Matrix2d W;
+    if (!affineSlipRate(k, laws, &r0, &W)) return AffineNewton::NotAffine;
     Eigen::Vector2d d = guess.normalized();
     for (int it = 0; it < kMaxCreepIterations; ++it) {
       const Eigen::Vector2d r = r0 + W * d, across(-d.y(), d.x());
@@ -547,16 +553,10 @@ class ExactImpact {
   // cross(d, r0 + W d) = 0 is then A cos + B sin + C cos 2phi + D sin 2phi + E = 0, a quartic in
   // t = tan(phi / 2). Returns false when r is not affine or no root has the slip growing.
   bool creepDirectionAffine(int k, Laws laws, Eigen::Vector2d* result) const {
-    auto rateAlong = [&](const Eigen::Vector2d& d) {
-      laws.direction[k] = d;
-      return slipRate(k, frictionFor(laws));
-    };
-    const Eigen::Vector2d r0 = rateAlong(Eigen::Vector2d::Zero());
-    const Eigen::Vector2d wx = rateAlong(Eigen::Vector2d::UnitX()) - r0;
-    const Eigen::Vector2d wy = rateAlong(Eigen::Vector2d::UnitY()) - r0;
-    const Eigen::Vector2d check = rateAlong(-Eigen::Vector2d::UnitX());
-    if (!((check - (r0 - wx)).norm() <= kAffineCheckRelative * (r0.norm() + wx.norm())))
-      return false;
+    Eigen::Vector2d r0;
+    Eigen::Matrix2d W;
+    if (!affineSlipRate(k, laws, &r0, &W)) return false;
+    const Eigen::Vector2d wx = W.col(0), wy = W.col(1);
     const double W00 = wx.x(), W10 = wx.y(), W01 = wy.x(), W11 = wy.y();
     const physics::PolynomialCoefficients quartic = {r0.y() + W10, -2 * r0.x() + 2 * (W11 - W00),
                                                      -2 * W10 - 4 * W01,
@@ -1044,35 +1044,29 @@ class ExactImpact {
       if (!(trial > lo && trial < hi)) trial = 0.5 * (lo + hi);
       const Step attempt = rungeKuttaStep(z, k1, trial);
       const double g = eventValue(event, attempt.z);
-      if (attempt.error > 1) {
-        // A trial that ends past the event may break the tolerance only because of what lies past
-        // it (a held contact's law changes there, which the step does not resolve): it still
-        // bounds the event from above. One that ends before the event was too long.
-        if (g <= tolerance_g && trial > lo) {
-          hi = trial;
-          g_hi = g;
-          if (side == -1) g_lo *= 0.5;
-          side = -1;
-          if (hi - lo <= kEventBracketUlps * kEpsilon * h) break;
-          trial = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
-          continue;
-        }
+      // A trial that ends past the event may break the tolerance only because of what lies past
+      // it (a held contact's law changes there, which the step does not resolve): it still bounds
+      // the event from above, though it cannot be a landing. One that ends before it was too long.
+      const bool accurate = attempt.error <= 1;
+      if (!accurate && !(g <= tolerance_g && trial > lo)) {
         *length = trial * stepFactor(attempt.error);
         return false;
       }
       Step polished;
       double shift = 0;
-      if (polishOnto(event, attempt, trial, &shift, &polished)) {
+      if (accurate && polishOnto(event, attempt, trial, &shift, &polished)) {
         *length = trial + shift;
         *landed = polished;
         return true;
       }
-      if (g <= tolerance_g) {  // at or past the event: a candidate landing
+      if (g <= tolerance_g) {  // at or past the event
         hi = trial;
         g_hi = g;
-        *length = trial;
-        *landed = attempt;
-        if (g >= -tolerance_g) return true;
+        if (accurate) {  // a candidate landing
+          *length = trial;
+          *landed = attempt;
+          if (g >= -tolerance_g) return true;
+        }
         if (side == -1) g_lo *= 0.5;  // Illinois: keep one end from sticking
         side = -1;
       } else {
@@ -1082,7 +1076,9 @@ class ExactImpact {
         side = +1;
       }
       if (hi - lo <= kEventBracketUlps * kEpsilon * h) break;
-      trial = newton(trial, g, eventSlope(event, attempt.rate_at_end));
+      // (After an inaccurate trial its slope is no guide: the trial, now the bracket's end, makes
+      // the next one regula falsi.)
+      if (accurate) trial = newton(trial, g, eventSlope(event, attempt.rate_at_end));
     }
     // (A landing beyond the bracket is none: a trial that broke the tolerance past the event
     // moved the bracket's end below it.)
