@@ -14,8 +14,6 @@ namespace baize::engine {
 namespace {
 
 constexpr double kRadToDeg = 180 / M_PI;
-// Suite limits: more cushions than this before a hit is no position a player would ask for.
-constexpr int kMaxCushionsExpected = 100;
 
 std::string fixed(double value, int decimals = 3) {
   std::ostringstream out;

@@ -65,9 +65,12 @@ struct Expectation {
   Kind kind = Kind::NoFoul;
   std::vector<std::string> balls;
   std::string ball;
-  int count = 0;
+  int count = 0;  // MinCushionsBeforeObjectBall: 0 to kMaxCushionsExpected
   CueBallRegion region;
 };
+// The most cushions a suite may expect before the object ball: more is no position a player would
+// ask for.
+constexpr int kMaxCushionsExpected = 100;
 
 // The suite-file key of an expectation ("pocketed", "cue_ball_stops_in", ...).
 const char* expectationKey(Expectation::Kind kind);

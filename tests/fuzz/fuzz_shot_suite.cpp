@@ -25,11 +25,9 @@ namespace {
 
 using baize::engine::CueBallRegion;
 using baize::engine::Expectation;
+using baize::engine::kMaxCushionsExpected;
 using baize::engine::Scene;
 using baize::fuzz::check;
-
-// The reader's limit on the cushions expected before the object ball (shot_suite.cpp).
-constexpr int kMaxCushionsExpected = 100;
 
 bool placed(const Scene& scene, const std::string& id) {
   return std::any_of(scene.balls.begin(), scene.balls.end(),
