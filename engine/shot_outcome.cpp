@@ -40,6 +40,10 @@ ShotOutcome shotOutcome(const SceneRun& run, const std::string& cue_ball) {
   ShotOutcome outcome;
   outcome.cue_ball = cue_ball;
   outcome.events = static_cast<long>(run.result.events.size());
+  for (std::size_t i = 0; i < run.ball_ids.size(); ++i) {
+    const BallRecord& record = run.result.final_balls.at(i);
+    outcome.final_balls.push_back({run.ball_ids[i], record.state.position, record.pocketed});
+  }
   for (const Event& e : run.result.events) {
     switch (e.kind) {
       case EventKind::BallBall:
@@ -50,6 +54,8 @@ ShotOutcome shotOutcome(const SceneRun& run, const std::string& cue_ball) {
       case EventKind::Cushion:
       case EventKind::Jaw:
         if (e.ball == cue && !outcome.first_hit) ++outcome.cushions_before_first_hit;
+        ++outcome.final_balls.at(e.ball).cushion_contacts;
+        ++outcome.cushion_contacts;
         break;
       case EventKind::Pocket:
         outcome.pocketed.push_back({run.ball_ids.at(e.ball), e.index});
@@ -57,10 +63,6 @@ ShotOutcome shotOutcome(const SceneRun& run, const std::string& cue_ball) {
       case EventKind::StateChange:
         break;
     }
-  }
-  for (std::size_t i = 0; i < run.ball_ids.size(); ++i) {
-    const BallRecord& record = run.result.final_balls.at(i);
-    outcome.final_balls.push_back({run.ball_ids[i], record.state.position, record.pocketed});
   }
   outcome.cue_ball_pocketed = run.result.final_balls.at(cue).pocketed;
   outcome.cue_ball_final_m = run.result.final_balls.at(cue).state.position;

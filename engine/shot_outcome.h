@@ -21,6 +21,7 @@ struct FinalBall {
   std::string id;
   Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // where it stopped (or fell)
   bool pocketed = false;
+  int cushion_contacts = 0;  // its cushion and jaw contacts over the whole shot
 };
 
 enum class Foul {
@@ -38,6 +39,7 @@ struct ShotOutcome {
   // Cushion and jaw contacts of the cue ball before it first touched another ball (all of its
   // cushion contacts when it touched none).
   int cushions_before_first_hit = 0;
+  int cushion_contacts = 0;  // cushion and jaw contacts of all balls
   bool cue_ball_pocketed = false;
   Eigen::Vector2d cue_ball_final_m = Eigen::Vector2d::Zero();
   std::vector<FinalBall> final_balls;  // in the scene's order

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Writes assets/suites/positional-drills.json from closed forms, without running the simulator.
+"""Writes assets/suites/positional-drills.json from closed forms, without running the simulator,
+and the shipped stun, follow and draw scenes it uses (assets/scenes/{stun,follow,draw}-shot.json):
 
-    python3 tools/positional_suite.py > assets/suites/positional-drills.json
+    python3 tools/positional_suite.py assets
 
 Every expected cue-ball region comes from the closed forms of docs/physics-notes (section 2:
 sliding and rolling on the cloth; section 3: the head-on frictional impact; section 4: the cue
@@ -10,6 +11,8 @@ fitted to the simulator's output.
 """
 import json
 import math
+import os
+import sys
 
 G = 9.81  # m/s^2, as physics::ClothParams
 CUE_MASS = 0.54  # kg, physics::CueStrikeParams default
@@ -167,6 +170,16 @@ notes = {}
 # 1. Stop shot: backspin b chosen so the spin has just worn off at contact: over D the sliding
 #    ball's R*omega rises from (5/2) b v0 to 0 at t = -b v0 / (mu_s g), so D = (v0^2 / mu_s g)(-b -
 #    b^2/2). The cue ball keeps (1 - e)/2 of its speed and no spin.
+# Scenes the suite shares with assets/scenes (the shipped stun, follow and draw shots): written there
+# and referenced by path, so that each is defined once.
+shipped_scenes = {}
+
+
+def shipped_scene(name, scene):
+    shipped_scenes[name] = scene
+    return "../scenes/" + name + ".json"
+
+
 p = POOL
 D, b = 0.6, -0.3
 v0 = math.sqrt(D * p["mu_s"] * G / (-b - b * b / 2))
@@ -181,9 +194,9 @@ cases.append({
                    f"(b = {b}, D = {D} m, arrival {v:.3f} m/s); the cue ball rolls on only "
                    f"{forward * 1000:.1f} mm (closed form); expected within {STOP_RADIUS_M} m of "
                    f"the contact point",
-    "scene": {"table": p["table"], "ball_set": p["ball_set"],
+    "scene": shipped_scene("stun-shot", {"table": p["table"], "ball_set": p["ball_set"],
               "balls": {"cue": at(cue, u, 0), "1": at(obj, u, 0)},
-              "shot": {"aim_at": "1", "speed_mps": r4(V), "height": b}},
+              "shot": {"aim_at": "1", "speed_mps": r4(V), "height": b}}),
     "expect": {"pocketed": ["1"], "first_hit": "1", "no_foul": True,
                "cue_ball_stops_in": {"circle": at(ghost, u, 0) + [STOP_RADIUS_M]}},
 })
@@ -205,9 +218,9 @@ cases.append({
     "description": f"Rolling full hit at {v:.3f} m/s into the top-right corner; the cue ball follows "
                    f"{follow:.3f} m (closed form with the ball-ball friction; {naive:.3f} m without "
                    f"it) and must stop within {POSITION_RADIUS_M} m of that spot",
-    "scene": {"table": p["table"], "ball_set": p["ball_set"],
+    "scene": shipped_scene("follow-shot", {"table": p["table"], "ball_set": p["ball_set"],
               "balls": {"cue": at(cue, u, 0), "1": at(obj, u, 0)},
-              "shot": {"aim_at": "1", "speed_mps": r4(V), "height": b}},
+              "shot": {"aim_at": "1", "speed_mps": r4(V), "height": b}}),
     "expect": {"pocketed": ["1"], "cue_ball_not_pocketed": True, "no_foul": True,
                "cue_ball_stops_in": {"circle": at(ghost, u, follow) + [POSITION_RADIUS_M]}},
 })
@@ -229,9 +242,9 @@ cases.append({
                    f"omega = {rw:.3f} m/s; the cue ball comes back {-draw:.3f} m (closed form with "
                    f"the ball-ball friction; {-naive:.3f} m without it) and must stop within "
                    f"{POSITION_RADIUS_M} m of that spot",
-    "scene": {"table": p["table"], "ball_set": p["ball_set"],
+    "scene": shipped_scene("draw-shot", {"table": p["table"], "ball_set": p["ball_set"],
               "balls": {"cue": at(cue, u, 0), "1": at(obj, u, 0)},
-              "shot": {"aim_at": "1", "speed_mps": r4(V), "height": b}},
+              "shot": {"aim_at": "1", "speed_mps": r4(V), "height": b}}),
     "expect": {"pocketed": ["1"], "cue_ball_not_pocketed": True, "no_foul": True,
                "cue_ball_stops_in": {"circle": at(ghost, u, draw) + [POSITION_RADIUS_M]}},
 })
@@ -346,6 +359,11 @@ suite = {
                    "(tools/positional_suite.py), not from the simulator",
     "cases": cases,
 }
-print(json.dumps(suite, indent=2))
-import sys
-print(json.dumps(notes, indent=2), file=sys.stderr)
+assets = sys.argv[1] if len(sys.argv) == 2 else sys.exit("usage: positional_suite.py ASSETS_DIR")
+for name, scene in shipped_scenes.items():
+    with open(os.path.join(assets, "scenes", name + ".json"), "w") as f:
+        f.write("{\n" + ",\n".join(f"  {json.dumps(k)}: {json.dumps(v)}" for k, v in scene.items())
+                + "\n}\n")
+with open(os.path.join(assets, "suites", "positional-drills.json"), "w") as f:
+    f.write(json.dumps(suite, indent=2) + "\n")
+print(json.dumps(notes, indent=2))

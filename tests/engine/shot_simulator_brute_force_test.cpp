@@ -2,7 +2,7 @@
 //
 // The brute force knows nothing of polynomials: it moves every ball on its own with physics::advance
 // (the closed form of a lone ball, exact between contacts) and samples every pair of balls and every
-// ball and cushion every kStep_s, refining between samples by bisection (a crossing) and golden-
+// ball and cushion, jaw rounding and pocket capture circle every kStep_s, refining between samples by bisection (a crossing) and golden-
 // section search (a dip between samples, as in a grazing pass). Between two consecutive contact
 // events of the loop it must see
 //   - no penetration (a gap below -kPenetrationTolerance_m) before the next event's time - step,
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "engine/shot_simulator.h"
+#include "engine/table.h"
 
 namespace baize::engine {
 namespace {
@@ -51,9 +52,10 @@ constexpr int kBisectionIterations = 60;
 
 const double kInf = std::numeric_limits<double>::infinity();
 
-// A pair of balls (other >= 0) or a ball and a cushion (cushion >= 0).
+// A pair of balls (other >= 0), a ball and a cushion (cushion >= 0), a ball and a jaw's rounding
+// (jaw >= 0), or a ball's centre and a pocket's capture circle (pocket >= 0: it falls in there).
 struct Contact {
-  int ball = 0, other = -1, cushion = -1;
+  int ball = 0, other = -1, cushion = -1, jaw = -1, pocket = -1;
 };
 
 struct Checker {
@@ -61,11 +63,27 @@ struct Checker {
   TableGeometry table = rectangularTable(kTableLength_m, kTableWidth_m);
   double R = params.cushion.radius_m;
 
+  Checker() = default;
+  explicit Checker(TableGeometry geometry) : table(std::move(geometry)) {}
+
   // The gap of a contact when the balls are `states`, m; +infinity for a ball beside the cushion's
-  // ends (it cannot touch that cushion there).
+  // ends or outside the jaw rounding's arc (it cannot touch that cushion or arc there).
   double gap(const Contact& c, const std::vector<BallState>& states) const {
     const Eigen::Vector2d p = states[c.ball].position;
     if (c.other >= 0) return (p - states[c.other].position).norm() - 2 * R;
+    if (c.pocket >= 0) {
+      const Circle& capture = table.pockets[c.pocket];
+      return (p - capture.centre_m).norm() - capture.radius_m;
+    }
+    if (c.jaw >= 0) {
+      const JawArc& arc = table.jaws[c.jaw];
+      const Eigen::Vector2d d = p - arc.centre_m;
+      // The direction of the centre from the arc's centre, counterclockwise from the arc's start.
+      const double turn = std::remainder(std::atan2(d.y(), d.x()) - arc.start_angle_rad, 2 * M_PI);
+      const double span = arc.end_angle_rad - arc.start_angle_rad;
+      if (turn < 0 || turn > span) return kInf;
+      return d.norm() - (arc.radius_m + R);
+    }
     const CushionSegment& s = table.cushions[c.cushion];
     const Eigen::Vector2d along = s.end_m - s.start_m;
     const double fraction = (p - s.start_m).dot(along) / along.squaredNorm();
@@ -84,11 +102,20 @@ struct Checker {
     return gap(c, at(start, dt_s));
   }
 
-  std::vector<Contact> contacts(int n) const {
+  // The contacts among the balls still on the table.
+  std::vector<Contact> contacts(const std::vector<bool>& pocketed) const {
+    const int n = static_cast<int>(pocketed.size());
     std::vector<Contact> out;
     for (int i = 0; i < n; ++i) {
-      for (int j = i + 1; j < n; ++j) out.push_back({i, j, -1});
+      if (pocketed[i]) continue;
+      for (int j = i + 1; j < n; ++j) {
+        if (!pocketed[j]) out.push_back({i, j});
+      }
       for (int k = 0; k < static_cast<int>(table.cushions.size()); ++k) out.push_back({i, -1, k});
+      for (int k = 0; k < static_cast<int>(table.jaws.size()); ++k) out.push_back({i, -1, -1, k});
+      for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
+        out.push_back({i, -1, -1, -1, k});
+      }
     }
     return out;
   }
@@ -129,8 +156,9 @@ struct Checker {
   // Samples every contact from `start` up to `until_s` (times from the start). A contact already
   // touching at the start is only counted once it penetrates: it may be separating (a pair just
   // resolved, or frozen balls parting).
-  Scan scan(const std::vector<BallState>& start, double until_s, double step_s) const {
-    const std::vector<Contact> all = contacts(static_cast<int>(start.size()));
+  Scan scan(const std::vector<BallState>& start, const std::vector<bool>& pocketed, double until_s,
+            double step_s) const {
+    const std::vector<Contact> all = contacts(pocketed);
     const int m = static_cast<int>(all.size());
     std::vector<double> g0(m), g1(m, kInf), g2(m, kInf);  // gaps now, one and two samples ago
     std::vector<bool> touching_at_start(m);
@@ -186,15 +214,21 @@ struct Checker {
     return found;
   }
 
-  // Checks a whole shot event by event; returns the number of contact events checked.
-  int checkShot(const std::vector<BallState>& input, double step_s, const std::string& scene) const {
+  // Contact events checked, by kind.
+  struct Checked {
+    int total = 0, jaws = 0, pockets = 0;
+  };
+
+  // Checks a whole shot event by event; returns the contact events checked.
+  Checked checkShot(const std::vector<BallState>& input, double step_s, const std::string& scene) const {
     const SimulationResult result = simulate(params, table, input);
     const int n = static_cast<int>(input.size());
+    std::vector<bool> pocketed(n, false);
     std::vector<BallState> known = input;  // each ball's last known state ...
     std::vector<double> known_time(n, 0);  // ... and its time
     std::vector<BallState> start = input;
     double start_time = 0;
-    int checked = 0;
+    Checked checked;
     auto statesAt = [&](double t) {
       std::vector<BallState> out(n);
       for (int i = 0; i < n; ++i) out[i] = physics::advance(params.cloth, known[i], t - known_time[i]);
@@ -202,14 +236,18 @@ struct Checker {
     };
     for (const Event& e : result.events) {
       if (e.time_s > kCheckedSpan_s) break;
-      const bool contact = e.kind == EventKind::BallBall || e.kind == EventKind::Cushion;
+      const bool contact = e.kind != EventKind::StateChange;
       if (contact) {
         const double next = e.time_s - start_time;
-        const Scan s = scan(start, next + step_s, step_s);
+        const Scan s = scan(start, pocketed, next + step_s, step_s);
         EXPECT_GE(s.first_penetration_s, next - step_s)
             << scene << ": the brute force sees an overlap at t = " << start_time + s.first_penetration_s
             << " s, before the loop's next contact (" << eventKindName(e.kind) << " at " << e.time_s << " s)";
-        const Contact own = e.kind == EventKind::BallBall ? Contact{e.ball, e.other, -1} : Contact{e.ball, -1, e.index};
+        Contact own{e.ball};
+        if (e.kind == EventKind::BallBall) own.other = e.other;
+        if (e.kind == EventKind::Cushion) own.cushion = e.index;
+        if (e.kind == EventKind::Jaw) own.jaw = e.index;
+        if (e.kind == EventKind::Pocket) own.pocket = e.index;
         // A contact touching already at the start (a tangent one, or one closing by a hair) need not
         // penetrate to be real; it is checked to be touching at the event below.
         const bool own_touching_at_start = std::abs(gap(own, start)) <= kTouchTolerance_m;
@@ -219,19 +257,22 @@ struct Checker {
         const double own_gap = gap(own, statesAt(e.time_s));
         EXPECT_LE(std::abs(own_gap), kTouchTolerance_m)
             << scene << ": the loop's " << eventKindName(e.kind) << " at " << e.time_s << " s has gap " << own_gap;
-        ++checked;
+        ++checked.total;
+        checked.jaws += e.kind == EventKind::Jaw;
+        checked.pockets += e.kind == EventKind::Pocket;
       }
       // Every ball's state at the event: the involved balls from the loop, the rest in closed form.
       const std::vector<BallState> now = statesAt(e.time_s);
       for (int i = 0; i < n; ++i) known[i] = now[i], known_time[i] = e.time_s;
       known[e.ball] = e.after[0];
       if (e.kind == EventKind::BallBall) known[e.other] = e.after[1];
+      if (e.kind == EventKind::Pocket) pocketed[e.ball] = true;
       if (contact) start = known, start_time = e.time_s;
     }
     // After the last checked contact: no penetration within the checked span while balls move.
     const double last = std::min(kCheckedSpan_s, result.end_time_s);
     if (last > start_time) {
-      const Scan s = scan(start, last - start_time, step_s);
+      const Scan s = scan(start, pocketed, last - start_time, step_s);
       EXPECT_EQ(s.first_penetration_s, kInf)
           << scene << ": the brute force sees an overlap at t = " << start_time + s.first_penetration_s
           << " s that the loop never reported";
@@ -285,9 +326,39 @@ TEST(ShotSimulatorBruteForce, RandomScenesMissNoContact) {
     const int n = 2 + scene % 3;
     for (int i = 0; i < n; ++i) ASSERT_TRUE(maker.placeClear(&balls, R, 1e-3));
     maker.strike(&balls[0], R, 4.0, 2.0);
-    checked += checker.checkShot(balls, kStep_s, "random scene " + std::to_string(scene));
+    checked += checker.checkShot(balls, kStep_s, "random scene " + std::to_string(scene)).total;
   }
   EXPECT_GT(checked, 300) << "the scenes must exercise many contacts";
+}
+
+// The shipped 9 ft table, with pockets: cue balls sent at a pocket's mouth, off its centre by up to
+// 1.5 times its half-width either way (into the opening, onto the jaw roundings and the facings), at up to 4 m/s with random spin, among 1-3 resting balls; jaw roundings,
+// facings and capture circles are checked like cushions and balls.
+TEST(ShotSimulatorBruteForce, ShotsAtThePocketsMissNoJawOrPocket) {
+  const Table pool = builtinTable("pool-9ft");
+  const Checker checker(geometryOf(pool));
+  const double R = checker.R;
+  SceneMaker maker(20261122);
+  Checker::Checked checked;
+  for (int scene = 0; scene < 150; ++scene) {
+    std::vector<BallState> balls;
+    const int n = 2 + scene % 3;
+    for (int i = 0; i < n; ++i) ASSERT_TRUE(maker.placeClear(&balls, R, 1e-3));
+    const Pocket& pocket = pool.pockets[maker.index(static_cast<int>(pool.pockets.size()))];
+    const Eigen::Vector2d across(-pocket.axis.y(), pocket.axis.x());
+    const double half_mouth = 0.5 * (pocket.jaw_tips_m[1] - pocket.jaw_tips_m[0]).norm();
+    const Eigen::Vector2d target = pocket.mouth_centre_m + maker.uniform(-1.5, 1.5) * half_mouth * across;
+    maker.strike(&balls[0], R, 4.0, 2.0);
+    const Eigen::Vector2d aim = (target - balls[0].position).normalized();
+    const double speed = maker.uniform(0.5, 4.0);
+    balls[0].velocity = {speed * aim.x(), speed * aim.y(), 0};
+    const Checker::Checked c = checker.checkShot(balls, kStep_s, "pocket scene " + std::to_string(scene));
+    checked.total += c.total, checked.jaws += c.jaws, checked.pockets += c.pockets;
+  }
+  // The seeded set checks 253 contacts, 19 at a jaw rounding and 27 pockets.
+  EXPECT_GT(checked.jaws, 10) << "the scenes must exercise the jaw roundings";
+  EXPECT_GT(checked.pockets, 15) << "the scenes must exercise the capture circles";
+  EXPECT_GT(checked.total, 200);
 }
 
 // A ball rolling or stunned straight past another at a centre distance of 2R + offset: the loop
@@ -383,7 +454,7 @@ TEST(ShotSimulatorBruteForce, FrozenBallsPartingOrPushedMissNoContact) {
       cue.angular_velocity = {maker.uniform(-50, 50), maker.uniform(-50, 50), maker.uniform(-50, 50)};
       balls.push_back(cue);
     }
-    checked += checker.checkShot(balls, kStep_s, "frozen scene " + std::to_string(scene));
+    checked += checker.checkShot(balls, kStep_s, "frozen scene " + std::to_string(scene)).total;
   }
   EXPECT_GT(checked, 60);
 }

@@ -118,6 +118,36 @@ TEST(ShotSimulator, HeadOnBallHitHappensAtTouchingDistanceAndExchangesVelocities
   EXPECT_NEAR(hit->after[1].velocity.x(), hit->before[0].velocity.x(), 1e-12);
 }
 
+// The 30-degree rule through the whole loop: a rolling cue ball cutting a frictionless, elastic
+// object ball at a half-ball hit (cut angle phi = 30 deg) leaves along the tangent line and then,
+// once its topspin has pulled it round (sliding on the cloth along a fixed slip direction), rolls
+// at theta from its first line with tan theta = sin phi cos phi / (sin^2 phi + 2/5): 33.67 deg.
+TEST(ShotSimulator, ThirtyDegreeRuleHoldsThroughTheWholeLoop) {
+  SimulationParams p = poolSimulationParams();
+  p.ball_ball.restitution = 1;
+  p.ball_ball.friction_law = physics::BallBallFrictionLaw::Constant;
+  p.ball_ball.constant_friction = 0;
+  const double R = p.cushion.radius_m, v0 = 1.5;
+  BallState cue = ballAt(-1, R, v0, 0);  // offset by R from the object ball's line: half-ball
+  cue.angular_velocity = {0, v0 / R, 0};  // natural roll along +x
+  const SimulationResult r = simulate(p, rectangularTable(20, 10), {cue, ballAt(0, 0)});
+  const auto hit = std::find_if(r.events.begin(), r.events.end(),
+                                [](const Event& e) { return e.kind == EventKind::BallBall; });
+  ASSERT_NE(hit, r.events.end());
+  const Eigen::Vector2d normal = (hit->before[1].position - hit->before[0].position).normalized();
+  EXPECT_NEAR(std::acos(normal.x()), M_PI / 6, 1e-9);  // the cut angle is 30 deg
+  // The cue ball's next event is its return to rolling.
+  const auto rolls = std::find_if(hit + 1, r.events.end(), [](const Event& e) {
+    return e.ball == 0 && e.kind == EventKind::StateChange;
+  });
+  ASSERT_NE(rolls, r.events.end());
+  const Eigen::Vector3d v = rolls->after[0].velocity;
+  const double phi = M_PI / 6;
+  const double expected = std::atan(std::sin(phi) * std::cos(phi) / (std::pow(std::sin(phi), 2) + 0.4));
+  EXPECT_NEAR(std::atan2(v.y(), v.x()), expected, 1e-9);
+  EXPECT_NEAR(expected * 180 / M_PI, 33.67, 0.01);
+}
+
 // Random scenes of 2-4 balls on a cushioned table: at every event nothing gains energy, touching
 // balls are 2R apart, and every ball ends on the table without overlapping another.
 TEST(ShotSimulator, RandomScenesKeepEnergyFallingAndBallsApartAndOnTheTable) {
@@ -157,26 +187,63 @@ TEST(ShotSimulator, RandomScenesKeepEnergyFallingAndBallsApartAndOnTheTable) {
   EXPECT_GT(cushion_hits, 50) << "the set must exercise cushion events";
 }
 
-// Mirroring the scene in the x axis (y -> -y, w -> (-w_x, w_y, -w_z)) mirrors the outcome.
+// The scene mirrored in the x axis: y -> -y, w -> (-w_x, w_y, -w_z).
+std::vector<BallState> mirrored(std::vector<BallState> balls) {
+  for (BallState& b : balls) {
+    b.position.y() *= -1;
+    b.velocity.y() *= -1;
+    b.angular_velocity.x() *= -1;
+    b.angular_velocity.z() *= -1;
+  }
+  return balls;
+}
+
+// Mirroring the scene in the x axis mirrors the outcome.
 TEST(ShotSimulator, MirrorImageScenesGiveMirrorImageResults) {
   const SimulationParams p = poolSimulationParams();
   const TableGeometry table = rectangularTable(2.54, 1.27);
   BallState cue = ballAt(-0.8, 0.1, 2.5, 0.7);
   cue.angular_velocity = {3, -20, 15};
   const std::vector<BallState> scene = {cue, ballAt(0.2, 0.25), ballAt(0.5, -0.3)};
-  std::vector<BallState> mirror = scene;
-  for (BallState& b : mirror) {
-    b.position.y() *= -1;
-    b.velocity.y() *= -1;
-    b.angular_velocity.x() *= -1;
-    b.angular_velocity.z() *= -1;
-  }
-  const SimulationResult a = simulate(p, table, scene), b = simulate(p, table, mirror);
+  const SimulationResult a = simulate(p, table, scene), b = simulate(p, table, mirrored(scene));
   ASSERT_EQ(a.events.size(), b.events.size());
   for (std::size_t i = 0; i < scene.size(); ++i) {
     EXPECT_NEAR(a.final_balls[i].state.position.x(), b.final_balls[i].state.position.x(), 1e-9);
     EXPECT_NEAR(a.final_balls[i].state.position.y(), -b.final_balls[i].state.position.y(), 1e-9);
   }
+}
+
+// The same on the shipped 9 ft table, which is its own mirror image in the x axis: seeded shots
+// with spin among three balls, aimed anywhere, so that jaws and pockets take part too.
+TEST(ShotSimulator, MirrorImageScenesOnAPocketedTableGiveMirrorImageResults) {
+  const SimulationParams p = poolSimulationParams();
+  const TableGeometry table = geometryOf(builtinTable("pool-9ft"));
+  std::mt19937_64 random(20261121);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int jaw_hits = 0, pocketed = 0;
+  for (int shot = 0; shot < 40; ++shot) {
+    const double heading = M_PI * unit(random), speed = 2.5 + 1.5 * unit(random);
+    BallState cue = ballAt(0.9 * unit(random), 0.4 * unit(random), speed * std::cos(heading),
+                           speed * std::sin(heading));
+    cue.angular_velocity = {20 * unit(random), 20 * unit(random), 40 * unit(random)};
+    const std::vector<BallState> scene = {cue, ballAt(0.3, 0.25), ballAt(-0.5, -0.3)};
+    const SimulationResult a = simulate(p, table, scene), b = simulate(p, table, mirrored(scene));
+    ASSERT_EQ(a.events.size(), b.events.size()) << "shot " << shot;
+    for (std::size_t k = 0; k < a.events.size(); ++k) {
+      ASSERT_EQ(a.events[k].kind, b.events[k].kind) << "shot " << shot << " event " << k;
+      EXPECT_NEAR(a.events[k].time_s, b.events[k].time_s, 1e-9) << "shot " << shot;
+      jaw_hits += a.events[k].kind == EventKind::Jaw;
+    }
+    for (std::size_t i = 0; i < scene.size(); ++i) {
+      const BallRecord &x = a.final_balls[i], &y = b.final_balls[i];
+      EXPECT_EQ(x.pocketed, y.pocketed) << "shot " << shot << " ball " << i;
+      EXPECT_NEAR(x.state.position.x(), y.state.position.x(), 1e-9) << "shot " << shot;
+      EXPECT_NEAR(x.state.position.y(), -y.state.position.y(), 1e-9) << "shot " << shot;
+      pocketed += x.pocketed;
+    }
+  }
+  EXPECT_GT(jaw_hits, 0) << "the shots must reach the jaws";
+  EXPECT_GT(pocketed, 0) << "the shots must pocket balls";
 }
 
 TEST(ShotSimulator, SameInputGivesBitIdenticalOutput) {

@@ -11,7 +11,8 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # The 9-ball break: the summary names the first ball hit (the 1: the shot aims at it) and the rest.
 out=$("$baize" simulate "$root/assets/scenes/9-ball-break.json") || fail "9-ball break exited $?"
 grep -q "^first ball hit: 1$" <<<"$out" || fail "first ball hit: $out"
-for line in "^pocketed:" "^cushions and jaws touched: [0-9]" "^events: [0-9]" "^wall time:"; do
+for line in "^pocketed: [0-9] ([a-z-]*)" "^cushion and jaw contacts: [0-9]* (cue ball [0-9]*)$" \
+  "^foul: none$" "^events: [0-9]" "^predictions: [0-9]* solved, [0-9]* skipped$" "^wall time:"; do
   grep -q "$line" <<<"$out" || fail "missing '$line' in: $out"
 done
 
@@ -32,6 +33,14 @@ for b in d["final"]:
     assert b["pocketed"] == bool(falls), b
     assert (b.get("pocket") == falls[0]["index"]) if falls else "pocket" not in b, b
 assert any(b["pocketed"] for b in d["final"]), "the break pockets a ball"
+names = ["bottom-left", "bottom-middle", "bottom-right", "top-right", "top-middle", "top-left"]
+for b in d["final"]:
+    assert b.get("pocket_name") == (names[b["pocket"]] if b["pocketed"] else None), b
+    contacts = [e for e in d["events"] if e["type"] in ("cushion", "jaw") and e["ball"] == b["id"]]
+    assert b["cushion_contacts"] == len(contacts), b
+assert d["foul"] == "none", d["foul"]
+assert d["predictions"]["solved"] > 0 and d["predictions"]["skipped"] > 0, d["predictions"]
+assert "samples" not in d
 # Trajectories: per ball, pieces starting at 0 in time order; the cue ball's first piece is the strike.
 assert set(d["trajectories"]) == {b["id"] for b in d["final"]}
 for pieces in d["trajectories"].values():
@@ -44,6 +53,36 @@ assert p["cushion"]["model"] == "exact" and p["ball_ball"]["model"] == "friction
 assert p["cloth"]["rolling_friction"] == 0.01 and "squirt_end_mass_kg" not in p["cue"], p
 PY
 grep -q "^models: cushion exact, ball-ball frictional$" <<<"$out" || fail "models line: $out"
+
+# --sample BALL@TIME: the state at that time, as the trajectory's closed form gives it. At 0 the
+# cue ball is where the scene put it, moving as struck; after the end every ball is at rest where
+# it stopped; the JSON carries the same samples.
+out=$("$baize" simulate "$root/assets/scenes/9-ball-break.json" --sample cue@0 --sample 9@1000 \
+  --sample cue@0.05 --json "$work/sampled.json") || fail "--sample exited $?"
+grep -q "^sample cue@0: position \[-0.6350, 0.0000\] m, velocity \[7.8369, 0.0000, 0.0000\] m/s" \
+  <<<"$out" || fail "sample at the strike: $out"
+python3 - "$work/sampled.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+s = d["samples"]
+assert [(x["ball"], x["time_s"]) for x in s] == [("cue", 0), ("9", 1000), ("cue", 0.05)], s
+final = {b["id"]: b for b in d["final"]}
+assert s[1]["position_m"] == final["9"]["position_m"] and s[1]["velocity_mps"] == [0, 0, 0], s[1]
+assert s[0]["velocity_mps"] == d["trajectories"]["cue"][0]["velocity_mps"], s[0]
+# Before the first collision the cue ball (struck below centre: it slides, its slip along +x)
+# slows at mu_s g: v = v0 - mu_s g t, x = x0 + v0 t - mu_s g t^2 / 2 (mu_s = 0.2, g = 9.81).
+v0, t, a = s[0]["velocity_mps"][0], 0.05, 0.2 * 9.81
+assert abs(s[2]["velocity_mps"][0] - (v0 - a * t)) < 1e-9, s[2]
+assert abs(s[2]["position_m"][0] - (s[0]["position_m"][0] + v0 * t - a * t * t / 2)) < 1e-9, s[2]
+PY
+for bad in "cue" "ghost@1" "cue@-1" "cue@nan" "cue@1s"; do
+  set +e
+  msg=$("$baize" simulate "$root/assets/scenes/stun-shot.json" --sample "$bad" 2>&1 >/dev/null)
+  status=$?
+  set -e
+  [[ $status -eq 2 ]] || fail "--sample $bad exited $status, expected 2"
+  grep -q -- "--sample '$bad' is not allowed" <<<"$msg" || fail "message for $bad: $msg"
+done
 
 # A scene choosing other models: the summary and the echo say so.
 cat >"$work/simple.json" <<'JSON'

@@ -2,14 +2,17 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <set>
+#include <sstream>
 
 #include "engine/scene.h"
+#include "engine/shot_outcome.h"
+#include "engine/shot_suite.h"
 #include "render/shot_record.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
@@ -21,6 +24,7 @@ namespace {
 struct SimulateFlags {
   std::string scene;
   std::string json_path;
+  std::vector<std::string> samples;  // "BALL@TIME_S"
   PictureFlags pictures;
 };
 
@@ -31,37 +35,64 @@ nlohmann::json stateJson(const physics::BallState& s) {
            {s.angular_velocity.x(), s.angular_velocity.y(), s.angular_velocity.z()}}};
 }
 
+// A --sample request: a ball of the scene and a time from the strike on.
+struct SampleRequest {
+  std::string text;  // as given, for messages
+  int ball = 0;
+  double time_s = 0;
+};
+
+SampleRequest parseSample(const std::string& text, const std::vector<std::string>& ball_ids) {
+  const auto refuse = [&](const std::string& why) {
+    throw UsageError("--sample '" + text + "' is not allowed: " + why);
+  };
+  const std::size_t at = text.rfind('@');
+  if (at == std::string::npos) refuse("it must be BALL@TIME_S, for example cue@1.5");
+  SampleRequest request{text, -1, 0};
+  const std::string id = text.substr(0, at), time = text.substr(at + 1);
+  for (std::size_t i = 0; i < ball_ids.size(); ++i) {
+    if (ball_ids[i] == id) request.ball = static_cast<int>(i);
+  }
+  if (request.ball < 0) refuse("'" + id + "' is not a ball of the scene");
+  std::size_t used = 0;
+  try {
+    request.time_s = std::stod(time, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != time.size() || !std::isfinite(request.time_s) || request.time_s < 0) {
+    refuse("the time must be a finite number of seconds >= 0 after the strike");
+  }
+  return request;
+}
+
+std::string vectorText(const Eigen::Vector3d& v) {
+  std::ostringstream out;
+  out << std::setprecision(4) << std::fixed << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']';
+  return out.str();
+}
+
 void runSimulate(const SimulateFlags& flags) {
   std::unique_ptr<AtomicFile> json_file;
   if (!flags.json_path.empty()) json_file = std::make_unique<AtomicFile>(flags.json_path, "--json");
   if (flags.pictures.wanted()) checkPictureFlags(flags.pictures);
   const engine::Scene scene = engine::loadScene(flags.scene);
+  std::vector<std::string> scene_ids;
+  for (const engine::PlacedBall& b : scene.balls) scene_ids.push_back(b.id);
+  std::vector<SampleRequest> samples;
+  for (const std::string& text : flags.samples) samples.push_back(parseSample(text, scene_ids));
   const auto start = std::chrono::steady_clock::now();
   const engine::SceneRun run = engine::runScene(
-      scene, /*record_trajectories=*/json_file != nullptr || flags.pictures.wanted());
+      scene, /*record_trajectories=*/json_file != nullptr || flags.pictures.wanted() ||
+                 !samples.empty());
   const double wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const engine::SimulationResult& r = run.result;
   const auto id = [&](int i) { return run.ball_ids.at(i); };
+  const engine::ShotOutcome outcome = engine::shotOutcome(run, scene.cue_ball);
+  const std::vector<std::string>& pocket_names = engine::pocketNames();
+  const engine::FinalBall& cue = *outcome.ball(scene.cue_ball);
 
-  std::string first_hit = "none";
-  std::vector<std::string> pocketed;
-  std::set<int> cushions;
-  int cue_index = 0;
-  for (std::size_t i = 0; i < run.ball_ids.size(); ++i) {
-    if (run.ball_ids[i] == scene.cue_ball) cue_index = static_cast<int>(i);
-  }
-  for (const engine::Event& e : r.events) {
-    if (e.kind == engine::EventKind::BallBall && first_hit == "none" &&
-        (e.ball == cue_index || e.other == cue_index)) {
-      first_hit = id(e.ball == cue_index ? e.other : e.ball);
-    }
-    if (e.kind == engine::EventKind::Pocket) pocketed.push_back(id(e.ball));
-    if (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw) {
-      cushions.insert(e.kind == engine::EventKind::Cushion ? e.index : 1000 + e.index);
-    }
-  }
-  const engine::BallRecord& cue = r.final_balls.at(cue_index);
   std::cout << std::setprecision(4) << std::fixed;
   std::cout << "scene: " << flags.scene << " (" << scene.table.name << ", " << run.ball_ids.size()
             << " balls)\n";
@@ -72,20 +103,40 @@ void runSimulate(const SimulateFlags& flags) {
   std::cout << "models: cushion " << physics["cushion"]["model"].get<std::string>()
             << ", ball-ball " << physics["ball_ball"]["model"].get<std::string>()
             << (physics["cue"].contains("squirt_end_mass_kg") ? ", squirt\n" : "\n");
-  std::cout << "first ball hit: " << first_hit << "\n";
-  std::cout << "pocketed:";
-  for (const std::string& b : pocketed) std::cout << ' ' << b;
-  std::cout << (pocketed.empty() ? " none\n" : "\n");
-  std::cout << "cushions and jaws touched: " << cushions.size() << "\n";
+  std::cout << "first ball hit: " << outcome.first_hit.value_or("none");
+  if (outcome.cushions_before_first_hit > 0) {
+    std::cout << " (after " << outcome.cushions_before_first_hit << " cushion or jaw contacts)";
+  }
+  std::cout << "\npocketed:";
+  for (std::size_t k = 0; k < outcome.pocketed.size(); ++k) {
+    std::cout << (k ? ", " : " ") << outcome.pocketed[k].ball << " ("
+              << pocket_names.at(outcome.pocketed[k].pocket) << ")";
+  }
+  std::cout << (outcome.pocketed.empty() ? " none\n" : "\n");
+  std::cout << "cushion and jaw contacts: " << outcome.cushion_contacts << " (cue ball "
+            << cue.cushion_contacts << ")\n";
   if (cue.pocketed) {
     std::cout << "cue ball: pocketed\n";
   } else {
-    std::cout << "cue ball stopped at: [" << cue.state.position.x() << ", "
-              << cue.state.position.y() << "] m\n";
+    std::cout << "cue ball stopped at: [" << cue.position_m.x() << ", " << cue.position_m.y()
+              << "] m\n";
   }
+  std::cout << "foul: " << engine::foulName(outcome.foul) << "\n";
   std::cout << "events: " << r.events.size() << ", at rest after " << r.end_time_s << " s\n";
   std::cout << "predictions: " << r.predictions << " solved, " << r.skipped_predictions
             << " skipped\n";
+  nlohmann::json sampled = nlohmann::json::array();
+  for (const SampleRequest& request : samples) {
+    const physics::BallState s = engine::sampleTrajectory(
+        engine::simulationParamsFor(scene).cloth, r.trajectories.at(request.ball), request.time_s);
+    std::cout << "sample " << request.text << ": position [" << s.position.x() << ", "
+              << s.position.y() << "] m, velocity " << vectorText(s.velocity)
+              << " m/s, angular velocity " << vectorText(s.angular_velocity) << " rad/s\n";
+    nlohmann::json entry = stateJson(s);
+    entry["ball"] = id(request.ball);
+    entry["time_s"] = request.time_s;
+    sampled.push_back(entry);
+  }
   std::cout << "wall time: " << std::setprecision(3) << wall_ms << " ms\n";
 
   if (json_file) {
@@ -95,8 +146,12 @@ void runSimulate(const SimulateFlags& flags) {
     out["scene_path"] = std::filesystem::absolute(flags.scene).lexically_normal().string();
     out["table"] = scene.table.name;
     out["end_time_s"] = r.end_time_s;
-    out["first_ball_hit"] = first_hit;
-    out["pocketed"] = pocketed;
+    out["first_ball_hit"] = outcome.first_hit.value_or("none");
+    out["pocketed"] = nlohmann::json::array();
+    for (const engine::PocketedBall& p : outcome.pocketed) out["pocketed"].push_back(p.ball);
+    out["foul"] = engine::foulName(outcome.foul);
+    out["predictions"] = {{"solved", r.predictions}, {"skipped", r.skipped_predictions}};
+    if (!samples.empty()) out["samples"] = sampled;
     out["physics"] = physics;  // the parameters the shot ran with, in the scene format's keys
     for (const engine::Event& e : r.events) {
       nlohmann::json event = {
@@ -111,7 +166,11 @@ void runSimulate(const SimulateFlags& flags) {
       nlohmann::json ball = stateJson(r.final_balls[i].state);
       ball["id"] = id(static_cast<int>(i));
       ball["pocketed"] = r.final_balls[i].pocketed;
-      if (r.final_balls[i].pocketed) ball["pocket"] = r.final_balls[i].pocket;
+      if (r.final_balls[i].pocketed) {
+        ball["pocket"] = r.final_balls[i].pocket;
+        ball["pocket_name"] = pocket_names.at(r.final_balls[i].pocket);
+      }
+      ball["cushion_contacts"] = outcome.final_balls[i].cushion_contacts;
       out["final"].push_back(ball);
       // The exact path: from each piece's start the ball moves in closed form
       // (physics/cloth_motion.h `advance`) from that state until the next piece.
@@ -139,6 +198,9 @@ void addSimulateCommand(CLI::App& parent) {
   command->add_option("scene", flags->scene, "the scene file (JSON, see docs/scenes.md)")
       ->required();
   command->add_option("--json", flags->json_path, "also write the events and final states here");
+  command->add_option("--sample", flags->samples,
+                      "print (and with --json write) BALL's state at TIME_S seconds after the "
+                      "strike, as BALL@TIME_S; repeatable");
   addPictureFlags(*command, flags->pictures);
   command->callback([flags] {
     if (const int status = runReportingErrors("simulate", [&] { runSimulate(*flags); })) {
