@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "physics/value_text.h"
 
@@ -21,6 +23,84 @@ std::string jsonText(const nlohmann::json& value) {
 
 std::string typeName(const nlohmann::json& value) { return value.type_name(); }
 
+// A parser callback that refuses a key appearing twice in one object, naming its path in the
+// document ("balls.cue", "cases[2].scene.shot"). It follows the parse with a stack of the open
+// objects and arrays: an object remembers its keys so far, an array the index of its current
+// element.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(std::string source) : source_(std::move(source)) {}
+
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        startElement();
+        open_.push_back({event == Event::object_start, {}, "", -1});
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        open_.pop_back();
+        break;
+      case Event::key: {
+        Container& object = open_.back();
+        object.current_key = parsed.get<std::string>();
+        if (!object.keys.insert(object.current_key).second) {
+          throw std::invalid_argument(source_ + ": " + path() +
+                                      " appears twice, which is not allowed: each key may "
+                                      "appear only once in an object");
+        }
+        break;
+      }
+      case Event::value:
+        startElement();
+        break;
+    }
+    return true;  // keep everything
+  }
+
+ private:
+  struct Container {
+    bool is_object;
+    std::set<std::string> keys;  // objects: the keys so far
+    std::string current_key;     // objects: the key being read
+    long index;                  // arrays: the element being read
+  };
+
+  // A value, object or array begins: inside an array it is the next element.
+  void startElement() {
+    if (!open_.empty() && !open_.back().is_object) ++open_.back().index;
+  }
+
+  // The path to the key being read, as JsonReader writes paths.
+  std::string path() const {
+    std::string text;
+    for (const Container& c : open_) {
+      if (c.is_object) {
+        text += (text.empty() ? "" : ".") + c.current_key;
+      } else {
+        text += "[" + std::to_string(c.index) + "]";
+      }
+    }
+    return text;
+  }
+
+  std::string source_;
+  std::vector<Container> open_;
+};
+
+template <typename Input>
+nlohmann::json parseStrictly(Input&& input, const std::string& source, const std::string& allowed) {
+  try {
+    return nlohmann::json::parse(std::forward<Input>(input), DuplicateKeyCheck(source));
+  } catch (const nlohmann::json::exception& error) {
+    // Parse errors and numbers too large for a double (1e999) alike.
+    throw std::invalid_argument(source + ": not valid JSON (" + error.what() +
+                                ") is not allowed: " + allowed);
+  }
+}
+
 }  // namespace
 
 JsonReader::JsonReader(const nlohmann::json& object, std::string source, std::string path)
@@ -37,17 +117,20 @@ nlohmann::json JsonReader::parseFile(const std::string& file_path) {
     throw std::invalid_argument(file_path +
                                 ": the file cannot be opened: it must exist and be readable");
   }
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& error) {
-    // Parse errors and numbers too large for a double (1e999) alike.
-    throw std::invalid_argument(file_path + ": not valid JSON (" + error.what() +
-                                ") is not allowed: it must be JSON with finite numbers");
-  }
+  return parseStrictly(in, file_path, kValidJson);
+}
+
+nlohmann::json JsonReader::parseText(const std::string& text, const std::string& source,
+                                     const std::string& allowed) {
+  return parseStrictly(text, source, allowed);
 }
 
 std::string JsonReader::where(const std::string& key) const {
   return source_ + ": " + (path_.empty() ? key : path_ + "." + key);
+}
+
+std::string JsonReader::keyAndValue(const std::string& key) const {
+  return (path_.empty() ? key : path_ + "." + key) + " = " + jsonText(value(key));
 }
 
 void JsonReader::reject(const std::string& key, const std::string& allowed) const {

@@ -17,9 +17,17 @@ class JsonReader {
   // `source` names the document in messages (usually its file path).
   JsonReader(const nlohmann::json& object, std::string source, std::string path = "");
 
-  // Parses the file. Throws std::invalid_argument when it cannot be opened or is not valid JSON
-  // (the message holds the parser's line and column).
+  // What parseFile says a file must be when it is not valid JSON.
+  static constexpr const char* kValidJson = "it must be JSON with finite numbers";
+
+  // Parses the file. Throws std::invalid_argument when it cannot be opened, is not valid JSON (the
+  // message holds the parser's line and column) or has a key twice in one object (the message names
+  // the key path): nlohmann::json alone would keep the last value silently.
   static nlohmann::json parseFile(const std::string& file_path);
+  // Parses JSON text as parseFile parses a file; `source` names it in messages and `allowed` says
+  // what the text must be when it is not valid JSON.
+  static nlohmann::json parseText(const std::string& text, const std::string& source,
+                                  const std::string& allowed = kValidJson);
 
   // Throws unless the object has exactly these keys: an unknown key or a missing one is named.
   void requireExactKeys(std::initializer_list<const char*> keys) const;
@@ -43,6 +51,8 @@ class JsonReader {
 
   // "source: path.key" for messages about a value that passed its own check but not a relation.
   std::string where(const std::string& key) const;
+  // "path.key = <the value as written>", for naming a second value in a message about the first.
+  std::string keyAndValue(const std::string& key) const;
 
   // Throws std::invalid_argument("<source>: <path.key> = <value> is not allowed: <allowed>").
   [[noreturn]] void reject(const std::string& key, const std::string& allowed) const;

@@ -1,5 +1,6 @@
 #include "engine/rack.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -11,9 +12,6 @@ namespace {
 
 using Eigen::Vector2d;
 using Rows = std::vector<std::vector<std::string>>;
-
-// Largest gap accepted, m: beyond a millimetre the balls are no longer a frozen rack.
-constexpr double kMaxGap_m = 1e-3;
 
 // Rows of balls from the apex towards the foot (+x). Row r holds its balls centred on y = 0 with
 // `spacing_m` between centres; rows whose counts differ by one nest, so neighbours in adjacent
@@ -89,6 +87,10 @@ void checkFits(const std::string& rack_name, const Table& table, const BallSet& 
 }
 
 }  // namespace
+
+double jitteredRackGap_m(double jitter_radius_m) {
+  return std::max(kFrozenGap_m, 2 * jitter_radius_m);
+}
 
 std::vector<std::string> rackNames() { return {"8-ball", "9-ball", "10-ball", "snooker"}; }
 

@@ -21,9 +21,19 @@ namespace baize::engine {
 // Default centre-to-centre gap between frozen neighbours beyond 2R, m: far below cloth and ball
 // tolerances (~1e-5 m), far above the rounding of table coordinates (~1e-15 m).
 constexpr double kFrozenGap_m = 1e-7;
+// Largest gap accepted, m: beyond a millimetre the balls are no longer a frozen rack.
+constexpr double kMaxGap_m = 1e-3;
+// Largest jitter radius accepted, m: the gap that keeps a rack jittered by it from overlapping
+// (jitteredRackGap_m) reaches kMaxGap_m.
+constexpr double kMaxJitterRadius_m = kMaxGap_m / 2;
+
+// The tightest gap that a rack jittered by `jitter_radius_m` (in [0, kMaxJitterRadius_m]) can have:
+// two neighbours move towards each other by at most twice the radius, so max(kFrozenGap_m, 2 x
+// radius) keeps them at least 2R apart (the frozen gap itself for radii up to half of it).
+double jitteredRackGap_m(double jitter_radius_m);
 
 struct RackOptions {
-  double gap_m = kFrozenGap_m;  // in (0, 1e-3]
+  double gap_m = kFrozenGap_m;  // in (0, kMaxGap_m]
   // With a seed, every ball of the triangle or diamond moves by a random vector of length at most
   // jitter_radius_m, which must lie in [0, gap_m / 2]: neighbours then stay at least 2R apart.
   std::optional<std::uint64_t> jitter_seed;

@@ -14,6 +14,13 @@ namespace {
 // by hand or by another program round to about this.
 constexpr double kPlacementSlack_m = 1e-9;
 
+// A cue at this elevation, deg, points straight down: elevations must stay below it.
+constexpr double kVerticalCue_deg = 90;
+// Largest heading magnitude, deg: programs that write shots need not wrap their headings into one
+// turn, but beyond this one ulp of the heading exceeds 1e-10 deg and the aim stops being exact (and
+// near 1e306 deg the conversion to radians overflows).
+constexpr double kMaxHeading_deg = 1e6;
+
 // A built-in name, or a file path (relative to the scene's folder) when it ends in ".json".
 std::string resolvePath(const std::string& scene_source, const std::string& name) {
   const std::filesystem::path folder = std::filesystem::path(scene_source).parent_path();
@@ -32,6 +39,59 @@ void placeOrMove(std::vector<PlacedBall>* balls, const std::string& id, const Ei
     }
   }
   balls->push_back({id, at});
+}
+
+// The cue's speed, elevation and tip offsets of `shot`, each checked in the units the scene writes
+// them in, so that a refusal names the key and the value as written; then physics' own check,
+// which they imply.
+void readCueShot(const JsonReader& shot, physics::CueShot* cue) {
+  const double speed_mps = shot.finiteNumber("speed_mps");
+  if (!(speed_mps > 0 && speed_mps <= physics::kMaxCueSpeed_mps)) {
+    shot.reject("speed_mps", "it must lie in (0, " + physics::valueText(physics::kMaxCueSpeed_mps) +
+                                 "] m/s: a cue at " +
+                                 physics::valueText(physics::kMaxCueSpeed_mps) +
+                                 " m/s sends the ball off at about 16 m/s, faster than any "
+                                 "measured break (12-14 m/s)");
+  }
+  cue->speed_mps = speed_mps;
+
+  const double elevation_deg = shot.has("elevation_deg") ? shot.finiteNumber("elevation_deg") : 0;
+  cue->elevation_rad = elevation_deg * M_PI / 180;
+  if (!(elevation_deg >= 0 && elevation_deg < kVerticalCue_deg && cue->elevation_rad < M_PI / 2)) {
+    shot.reject("elevation_deg",
+                "it must lie in [0, " + physics::valueText(kVerticalCue_deg) +
+                    ") deg: the cue cannot come from below the table or straight down");
+  }
+
+  cue->side_offset = shot.has("side") ? shot.finiteNumber("side") : 0;
+  cue->height_offset = shot.has("height") ? shot.finiteNumber("height") : 0;
+  const double offset = std::hypot(cue->side_offset, cue->height_offset);  // as physics computes it
+  if (!(offset <= physics::kMiscueOffsetLimit)) {
+    // The larger offset is blamed; the other is named when the scene gives it.
+    const bool side_larger = std::abs(cue->side_offset) > std::abs(cue->height_offset);
+    const std::string blamed = side_larger ? "side" : "height";
+    const std::string other = side_larger ? "height" : "side";
+    shot.reject(blamed, (shot.has(other) ? "with " + shot.keyAndValue(other) + " the" : "the") +
+                            " tip offset sqrt(side^2 + height^2) = " + physics::valueText(offset) +
+                            " must be at most " + physics::valueText(physics::kMiscueOffsetLimit) +
+                            " (units of R), or the tip miscues");
+  }
+  if (!physics::cueMeetsTipPointFirst(*cue)) {
+    const double steepest_deg =
+        physics::steepestCueElevationRad(cue->side_offset, cue->height_offset) * 180 / M_PI;
+    shot.reject("elevation_deg", "with " + shot.keyAndValue("height") +
+                                     (shot.has("side") ? " and " + shot.keyAndValue("side") : "") +
+                                     " it must be below " + physics::valueText(steepest_deg) +
+                                     " deg: a steeper cue's line enters the ball before the tip "
+                                     "reaches its point");
+  }
+  try {
+    physics::validateCueShot(*cue);
+  } catch (const std::invalid_argument& e) {
+    // Not reached: the checks above imply physics' own.
+    throw std::logic_error(std::string("a cue shot passed the scene's checks, not physics': ") +
+                           e.what());
+  }
 }
 
 }  // namespace
@@ -57,10 +117,21 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
     const JsonReader rack = scene.object("rack");
     rack.requireKeys({"name"}, {"jitter_seed", "jitter_m"});
     RackOptions options;
+    if (rack.has("jitter_m") && !rack.has("jitter_seed")) {
+      rack.reject("jitter_m", "it needs rack.jitter_seed, the seed of the random displacements");
+    }
     if (rack.has("jitter_seed")) {
       options.jitter_seed = static_cast<std::uint64_t>(rack.integer("jitter_seed", 0, 1 << 30));
-      options.jitter_radius_m = rack.has("jitter_m") ? rack.nonNegativeNumber("jitter_m") : 0;
-      options.gap_m = std::max(options.gap_m, 2 * options.jitter_radius_m);
+      if (rack.has("jitter_m")) {
+        options.jitter_radius_m = rack.finiteNumber("jitter_m");
+        if (!(options.jitter_radius_m >= 0 && options.jitter_radius_m <= kMaxJitterRadius_m)) {
+          rack.reject("jitter_m", "it must lie in [0, " + physics::valueText(kMaxJitterRadius_m) +
+                                      "] m (the rack's gap, twice the jitter, is at most " +
+                                      physics::valueText(kMaxGap_m) + " m)");
+        }
+      }
+      // Packed as tightly as the jitter allows without overlaps (docs/scenes.md).
+      options.gap_m = jitteredRackGap_m(options.jitter_radius_m);
     }
     try {
       result.balls = placeRack(rack.text("name"), result.table, result.ball_set, options);
@@ -107,21 +178,17 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
     const Eigen::Vector2d to = target->position_m - cue->position_m;
     heading_rad = std::atan2(to.y(), to.x());
   } else {
-    heading_rad = shot.finiteNumber("heading_deg") * M_PI / 180;
+    const double heading_deg = shot.finiteNumber("heading_deg");
+    if (!(std::abs(heading_deg) <= kMaxHeading_deg)) {
+      shot.reject("heading_deg",
+                  "its magnitude must be at most " + physics::valueText(kMaxHeading_deg) + " deg");
+    }
+    heading_rad = heading_deg * M_PI / 180;
   }
-  result.shot.speed_mps = shot.positiveNumber("speed_mps");
   result.shot.heading_rad = heading_rad;
-  result.shot.elevation_rad =
-      shot.has("elevation_deg") ? shot.nonNegativeNumber("elevation_deg") * M_PI / 180 : 0;
-  result.shot.side_offset = shot.has("side") ? shot.finiteNumber("side") : 0;
-  result.shot.height_offset = shot.has("height") ? shot.finiteNumber("height") : 0;
+  readCueShot(shot, &result.shot);
   if (scene.has("physics")) result.overrides = readPhysicsOverrides(scene.object("physics"));
   validateScenePhysics(simulationParamsFor(result), cueStrikeParamsFor(result), source);
-  try {
-    physics::validateCueShot(result.shot);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(shot.where("shot") + ": " + e.what());
-  }
 
   // Where the balls stand: on the table, apart.
   const double R = result.ball_set.radius_m;

@@ -78,6 +78,19 @@ void validateCueShot(const CueShot& s) {
   }
 }
 
+bool cueMeetsTipPointFirst(const CueShot& shot) {
+  const double a = shot.side_offset, b = shot.height_offset;
+  const double c = std::sqrt(1 - a * a - b * b);
+  const double facing = c * std::cos(shot.elevation_rad) + b * std::sin(shot.elevation_rad);
+  return facing > 0;
+}
+
+double steepestCueElevationRad(double side_offset, double height_offset) {
+  const double a = side_offset, b = height_offset;
+  if (b >= 0) return kPi / 2;
+  return std::atan2(std::sqrt(1 - a * a - b * b), -b);
+}
+
 CueStrikeResult strikeCueBall(const CueStrikeParams& params, const CueShot& shot) {
   validateCueStrikeParams(params);
   validateCueShot(shot);

@@ -40,6 +40,15 @@ namespace baize::physics {
 // "about 0.5 R"; a chalked tip slips off beyond it).
 constexpr double kMiscueOffsetLimit = 0.5;
 
+// Fastest cue speed V accepted from input (scenes), m/s. The fastest break shots measured send the
+// cue ball off at about 12-14 m/s; a level centre hit sends it off at up to about 1.33 V (pool
+// ball, the default 0.54 kg cue with e_tip 0.75), so 12.3 m/s reaches about 16 m/s: above any
+// measured break, and the fastest ball speed the stress program (tools/baize/stress_shots.cpp)
+// checks the engine at, which also strikes its cue shots at up to this speed. The strike itself
+// holds at any speed (validateCueShot does not check this bound): noise added to a shot may exceed
+// it slightly.
+constexpr double kMaxCueSpeed_mps = 12.3;
+
 struct CueStrikeParams {
   double cue_mass_kg = 0.54;  // m_c, whole cue (19 oz)
   // e_tip. Alciatore measured 0.71-0.75 for playing cues with medium-hardness leather tips
@@ -73,6 +82,15 @@ struct CueStrikeResult {
 // Throw std::invalid_argument naming the value and the allowed range.
 void validateCueStrikeParams(const CueStrikeParams& params);
 void validateCueShot(const CueShot& shot);
+
+// Whether the cue meets the ball first at the tip point Q (Q . d < 0, i.e. c cos(theta) + b
+// sin(theta) > 0), with the arithmetic strikeCueBall uses to refuse a shot; needs an offset within
+// the miscue limit. Always true at or above the centre (b >= 0) for theta in [0, pi/2).
+bool cueMeetsTipPointFirst(const CueShot& shot);
+// The elevation (rad) from which the cue no longer meets Q first: pi/2 for b >= 0, atan(c / -b)
+// below the centre (c = sqrt(1 - a^2 - b^2)), where the cue line grazes the ball at Q. For
+// messages; cueMeetsTipPointFirst decides.
+double steepestCueElevationRad(double side_offset, double height_offset);
 
 // Throws std::invalid_argument on invalid parameters, a miscue (offset above kMiscueOffsetLimit) or
 // a cue that cannot reach Q (Q must face the cue: Q . d < 0).

@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
+
+#include "engine/json_reader.h"
 
 namespace baize::render {
 namespace {
@@ -58,15 +59,8 @@ engine::EventKind eventKindNamed(const std::string& name, const std::string& sou
   reject(source, path, "event type '" + name + "' is not one the event loop writes");
 }
 
-nlohmann::json readJson(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the file");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw std::invalid_argument(path + ": not valid JSON: " + e.what());
-  }
-}
+// The project's strict parse: a key given twice is refused as in scenes.
+nlohmann::json readJson(const std::string& path) { return engine::JsonReader::parseFile(path); }
 
 }  // namespace
 

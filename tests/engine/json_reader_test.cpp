@@ -1,8 +1,13 @@
 #include "engine/json_reader.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/engine/error_test_support.h"
 
@@ -58,6 +63,43 @@ TEST(JsonReader, TheDocumentMustBeAnObject) {
   const nlohmann::json array = nlohmann::json::array({1, 2});
   EXPECT_MENTIONS(invalidArgumentMessage([&] { JsonReader(array, "doc"); }),
                   "doc: the document = [1,2] is not allowed");
+}
+
+// A key given twice in one object is refused with the source and the key's path, at any depth and
+// inside arrays; the same key in different objects is not a duplicate.
+TEST(JsonReader, ParsingRefusesAKeyGivenTwiceInOneObject) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"cue": [-0.6, 0], "cue": [0, 0]})", "doc: cue appears twice, which is not allowed"},
+      {R"({"balls": {"cue": [-0.6, 0], "cue": [0, 0]}})", "doc: balls.cue appears twice"},
+      {R"({"a": {"b": {"c": 1, "d": 2, "c": 3}}})", "doc: a.b.c appears twice"},
+      {R"({"cases": [{"x": 1}, [0, {"y": 1}], {"z": {}, "z": 2}]})",
+       "doc: cases[2].z appears twice"},
+      {R"({"cases": [[0, {"y": 1, "y": 1}]]})", "doc: cases[0][1].y appears twice"},
+      {R"([{"k": 1}, {"k": 1, "k": 1}])", "doc: [1].k appears twice"},
+  };
+  for (const auto& [text, expected] : cases) {
+    EXPECT_MENTIONS(invalidArgumentMessage([&] { JsonReader::parseText(text, "doc"); }), expected);
+  }
+  const std::string distinct = R"({"a": {"k": 1}, "b": {"k": 2}, "k": [{"k": 3}, {"k": 4}]})";
+  EXPECT_EQ(JsonReader::parseText(distinct, "doc"), nlohmann::json::parse(distinct));
+}
+
+TEST(JsonReader, ParsingNamesTheSourceOfTextThatIsNotJson) {
+  EXPECT_MENTIONS(invalidArgumentMessage([] { JsonReader::parseText("{\"a\": }", "doc"); }),
+                  "doc: not valid JSON (");
+  EXPECT_MENTIONS(invalidArgumentMessage([] { JsonReader::parseText("[1", "line 3", "one line"); }),
+                  ") is not allowed: one line");
+}
+
+// Files go through the same check: the message names the file.
+TEST(JsonReader, ParsingAFileRefusesAKeyGivenTwice) {
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("baize_json_reader_test_" + std::to_string(::getpid()) + ".json"))
+                               .string();
+  std::ofstream(path) << R"({"corner_pocket": {"mouth_m": 0.11, "mouth_m": 0.12}})";
+  EXPECT_MENTIONS(invalidArgumentMessage([&] { JsonReader::parseFile(path); }),
+                  path + ": corner_pocket.mouth_m appears twice, which is not allowed");
+  std::filesystem::remove(path);
 }
 
 }  // namespace

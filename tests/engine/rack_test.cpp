@@ -138,6 +138,23 @@ TEST_P(RackTest, JitterStaysWithinItsRadiusAndNeverOverlaps) {
   }
 }
 
+// The gap jitteredRackGap_m gives is the tightest that never overlaps: the frozen gap for a jitter
+// within half of it, twice the jitter beyond, up to the largest jitter (whose gap is the largest
+// accepted); every rack jittered by the largest radius at that gap stays apart.
+TEST_P(RackTest, JitteredRackGapIsTheTightestThatNeverOverlaps) {
+  EXPECT_EQ(jitteredRackGap_m(0), kFrozenGap_m);
+  EXPECT_EQ(jitteredRackGap_m(kFrozenGap_m / 2), kFrozenGap_m);
+  EXPECT_EQ(jitteredRackGap_m(2e-5), 4e-5);
+  EXPECT_EQ(jitteredRackGap_m(kMaxJitterRadius_m), kMaxGap_m);
+  RackOptions options;
+  options.jitter_radius_m = kMaxJitterRadius_m;
+  options.gap_m = jitteredRackGap_m(options.jitter_radius_m);
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    options.jitter_seed = seed;
+    EXPECT_GE(closestPair(placeRack(GetParam().rack, table, balls, options)), 2 * radius);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Racks, RackTest, ::testing::ValuesIn(kRackCases), [](const auto& info) {
   std::string name = info.param.rack + "_on_" + info.param.table;
   for (char& c : name) {

@@ -2,11 +2,17 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <functional>
+#include <utility>
+#include <vector>
 
+#include "tests/engine/error_test_support.h"
 #include "tests/physics/fp_trap_support.h"
 
 namespace baize::engine {
@@ -110,45 +116,151 @@ TEST(Scene, BallsByIdPlaceOrMoveBalls) {
   EXPECT_EQ(scene.balls.size(), 10u);
 }
 
+// Every bad scene is refused naming the file, the key path and the value as written, and saying
+// what is allowed.
 TEST(Scene, BadScenesAreRejectedNamingTheKeyAndValue) {
+  struct Case {
+    std::string what;
+    std::function<void(nlohmann::json*)> edit;
+    std::vector<std::string> parts;  // each must appear in the message
+  };
+  const std::vector<Case> cases = {
+      {"unknown key",
+       [](nlohmann::json* d) { (*d)["tabel"] = "pool-9ft"; },
+       {"test.json: tabel = \"pool-9ft\" is not allowed: unknown key"}},
+      {"missing key", [](nlohmann::json* d) { d->erase("shot"); }, {"test.json: shot is missing"}},
+      {"unknown table",
+       [](nlohmann::json* d) { (*d)["table"] = "pool-11ft"; },
+       {"test.json: table = \"pool-11ft\" is not allowed"}},
+      {"unknown ball",
+       [](nlohmann::json* d) {
+         (*d)["balls"] = {{"17", {0, 0}}};
+       },
+       {"test.json: balls.17 = [0,0] is not allowed", "a ball of the set 'pool'"}},
+      {"overlap",  // on the foot spot, where the 1 stands
+       [](nlohmann::json* d) {
+         (*d)["balls"] = {{"cue", {0.635, 0.0}}};
+       },
+       {"test.json: balls '1' and 'cue' overlap", "at least 2R = "}},
+      {"off the table",
+       [](nlohmann::json* d) {
+         (*d)["balls"] = {{"cue", {2.0, 0.0}}};
+       },
+       {"test.json: ball 'cue' at [2, 0] is off the table"}},
+      {"aim and heading",
+       [](nlohmann::json* d) { (*d)["shot"]["heading_deg"] = 10; },
+       {"test.json: shot.heading_deg = 10 is not allowed", "not both"}},
+      {"huge heading",
+       [](nlohmann::json* d) {
+         (*d)["shot"] = {{"heading_deg", 1e307}, {"speed_mps", 1}};
+       },
+       {"test.json: shot.heading_deg = 1e+307 is not allowed", "at most 1e+06 deg"}},
+      {"negative speed",
+       [](nlohmann::json* d) { (*d)["shot"]["speed_mps"] = -1; },
+       {"test.json: shot.speed_mps = -1 is not allowed", "(0, 12.3] m/s"}},
+      {"zero speed",
+       [](nlohmann::json* d) { (*d)["shot"]["speed_mps"] = 0; },
+       {"test.json: shot.speed_mps = 0 is not allowed", "(0, 12.3] m/s"}},
+      {"speed above the fastest break",
+       [](nlohmann::json* d) { (*d)["shot"]["speed_mps"] = 800; },
+       {"test.json: shot.speed_mps = 800 is not allowed", "(0, 12.3] m/s"}},
+      {"speed just above the bound",
+       [](nlohmann::json* d) { (*d)["shot"]["speed_mps"] = 12.31; },
+       {"test.json: shot.speed_mps = 12.31 is not allowed"}},
+      {"speed as text",
+       [](nlohmann::json* d) { (*d)["shot"]["speed_mps"] = "fast"; },
+       {"test.json: shot.speed_mps = \"fast\" is not allowed", "must be a number"}},
+      {"elevation beyond vertical",
+       [](nlohmann::json* d) { (*d)["shot"]["elevation_deg"] = 95; },
+       {"test.json: shot.elevation_deg = 95 is not allowed", "[0, 90) deg"}},
+      {"elevation vertical",
+       [](nlohmann::json* d) { (*d)["shot"]["elevation_deg"] = 90.0; },
+       {"test.json: shot.elevation_deg = 90.0 is not allowed", "[0, 90) deg"}},
+      {"negative elevation",
+       [](nlohmann::json* d) { (*d)["shot"]["elevation_deg"] = -5; },
+       {"test.json: shot.elevation_deg = -5 is not allowed", "[0, 90) deg"}},
+      {"steep cue below the centre",
+       [](nlohmann::json* d) {
+         (*d)["shot"]["elevation_deg"] = 70;
+         (*d)["shot"]["height"] = -0.4;
+       },
+       // atan(sqrt(1 - 0.16) / 0.4) = 66.42 deg
+       {"test.json: shot.elevation_deg = 70 is not allowed", "with shot.height = -0.4",
+        "below 66.42"}},
+      {"miscue by side",
+       [](nlohmann::json* d) { (*d)["shot"]["side"] = 0.7; },
+       {"test.json: shot.side = 0.7 is not allowed", "sqrt(side^2 + height^2) = 0.7", "at most 0.5",
+        "miscues"}},
+      {"miscue by both",
+       [](nlohmann::json* d) {
+         (*d)["shot"]["side"] = 0.3;
+         (*d)["shot"]["height"] = -0.45;
+       },
+       {"test.json: shot.height = -0.45 is not allowed", "with shot.side = 0.3", "at most 0.5",
+        "miscues"}},
+      {"rack jitter too large",
+       [](nlohmann::json* d) {
+         (*d)["rack"]["jitter_seed"] = 7;
+         (*d)["rack"]["jitter_m"] = 0.01;
+       },
+       {"test.json: rack.jitter_m = 0.01 is not allowed", "[0, 5e-04] m"}},
+      {"negative rack jitter",
+       [](nlohmann::json* d) {
+         (*d)["rack"]["jitter_seed"] = 7;
+         (*d)["rack"]["jitter_m"] = -1e-6;
+       },
+       {"test.json: rack.jitter_m = -1e-06 is not allowed", "[0, 5e-04] m"}},
+      {"rack jitter without a seed",
+       [](nlohmann::json* d) { (*d)["rack"]["jitter_m"] = 2e-5; },
+       {"test.json: rack.jitter_m = 2e-05 is not allowed", "rack.jitter_seed"}},
+      {"unknown rack",
+       [](nlohmann::json* d) { (*d)["rack"]["name"] = "7-ball"; },
+       {"test.json: rack.name = \"7-ball\" is not allowed", "8-ball, 9-ball, 10-ball, snooker"}},
+  };
+  for (const Case& c : cases) {
+    nlohmann::json doc = nineBall();
+    c.edit(&doc);
+    const std::string message = sceneError(doc);
+    for (const std::string& part : c.parts) {
+      EXPECT_THAT(message, HasSubstr(part)) << c.what;
+    }
+  }
+
+  EXPECT_THAT(invalidArgumentMessage([] { loadScene("/nonexistent/scene.json"); }),
+              HasSubstr("/nonexistent/scene.json: the file cannot be opened"));
+}
+
+// The fastest cue a scene may give is accepted, and runs.
+TEST(Scene, TheFastestCueSpeedIsAccepted) {
   nlohmann::json doc = nineBall();
-  doc["tabel"] = "pool-9ft";
-  EXPECT_THAT(sceneError(doc), HasSubstr("tabel"));
-  EXPECT_THAT(sceneError(doc), HasSubstr("unknown key"));
+  doc["shot"]["speed_mps"] = physics::kMaxCueSpeed_mps;
+  const Scene scene = sceneFromJson(doc, "test.json");
+  EXPECT_EQ(scene.shot.speed_mps, physics::kMaxCueSpeed_mps);
+  EXPECT_FALSE(runScene(scene).result.events.empty());
+}
 
-  doc = nineBall();
-  doc.erase("shot");
-  EXPECT_THAT(sceneError(doc), HasSubstr("shot is missing"));
-
-  doc = nineBall();
-  doc["table"] = "pool-11ft";
-  EXPECT_THAT(sceneError(doc), HasSubstr("pool-11ft"));
-
-  doc = nineBall();
-  doc["balls"] = {{"17", {0, 0}}};
-  EXPECT_THAT(sceneError(doc), HasSubstr("balls.17"));
-
-  doc = nineBall();
-  doc["balls"] = {{"cue", {0.635, 0.0}}};  // on the foot spot, where the 1 stands
-  EXPECT_THAT(sceneError(doc), HasSubstr("overlap"));
-
-  doc = nineBall();
-  doc["balls"] = {{"cue", {2.0, 0.0}}};
-  EXPECT_THAT(sceneError(doc), HasSubstr("off the table"));
-
-  doc = nineBall();
-  doc["shot"]["heading_deg"] = 10;
-  EXPECT_THAT(sceneError(doc), HasSubstr("not both"));
-
-  doc = nineBall();
-  doc["shot"]["speed_mps"] = -1;
-  EXPECT_THAT(sceneError(doc), HasSubstr("shot.speed_mps = -1"));
-
-  doc = nineBall();
-  doc["shot"]["side"] = 0.7;  // beyond the miscue limit
-  EXPECT_THAT(sceneError(doc), HasSubstr("shot"));
-
-  EXPECT_THROW(loadScene("/nonexistent/scene.json"), std::invalid_argument);
+// A key given twice in a scene file is refused, naming the file and the key path, wherever it is.
+TEST(Scene, DuplicateKeysInAFileAreRefused) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("baize_scene_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  const std::string path = (folder / "twice.json").string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"table": "pool-9ft", "ball_set": "pool", "balls": {"cue": [-0.6, 0], "cue": [0, 0]},
+           "shot": {"heading_deg": 0, "speed_mps": 1}})",
+       path + ": balls.cue appears twice, which is not allowed"},
+      {R"({"table": "pool-9ft", "table": "pool-7ft", "ball_set": "pool",
+           "balls": {"cue": [-0.6, 0]}, "shot": {"heading_deg": 0, "speed_mps": 1}})",
+       path + ": table appears twice"},
+      {R"({"table": "pool-9ft", "ball_set": "pool", "balls": {"cue": [-0.6, 0]},
+           "shot": {"heading_deg": 0, "speed_mps": 1, "speed_mps": 2}})",
+       path + ": shot.speed_mps appears twice"},
+  };
+  for (const auto& [text, expected] : cases) {
+    std::ofstream(path) << text;
+    EXPECT_THAT(invalidArgumentMessage([&] { loadScene(path); }), HasSubstr(expected));
+  }
+  std::filesystem::remove_all(folder);
 }
 
 // A lone cue ball at [x, 0] struck along +x at its natural-roll height (0.4 R above the centre,

@@ -11,6 +11,8 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/physics/rejection_test_support.h"
 
@@ -285,6 +287,37 @@ TEST(CueStrike, RejectsBadParameters) {
                       "ball radius (m)");
   expectValueRejected(params([](CueStrikeParams& p) { p.end_mass_kg = 0.0; }),
                       "cue end mass (kg) = 0");
+}
+
+// cueMeetsTipPointFirst decides as strikeCueBall does, on either side of the steepest elevation
+// below the centre; at or above the centre every elevation below vertical is reachable.
+TEST(CueStrike, TheSteepestElevationSeparatesReachableFromUnreachableTipPoints) {
+  const CueStrikeParams params;
+  const std::vector<std::pair<double, double>> below_centre = {
+      {0.0, -0.4}, {0.3, -0.35}, {-0.2, -0.1}, {0.0, -0.5}};
+  for (const auto& [a, b] : below_centre) {
+    const double steepest = steepestCueElevationRad(a, b);
+    EXPECT_NEAR(std::tan(steepest), std::sqrt(1 - a * a - b * b) / -b, kRelative * 10);
+    for (const double theta :
+         {0.0, steepest - 1e-12, steepest + 1e-12, std::nextafter(kPi / 2, 0.0)}) {
+      CueShot shot;
+      shot.speed_mps = 1;
+      shot.side_offset = a;
+      shot.height_offset = b;
+      shot.elevation_rad = theta;
+      const bool meets = cueMeetsTipPointFirst(shot);
+      EXPECT_EQ(meets, theta < steepest) << "a " << a << ", b " << b << ", theta " << theta;
+      bool struck = true;
+      try {
+        strikeCueBall(params, shot);
+      } catch (const std::invalid_argument&) {
+        struck = false;
+      }
+      EXPECT_EQ(struck, meets) << "a " << a << ", b " << b << ", theta " << theta;
+    }
+  }
+  EXPECT_EQ(steepestCueElevationRad(0.3, 0.2), kPi / 2);
+  EXPECT_EQ(steepestCueElevationRad(0, 0), kPi / 2);
 }
 
 }  // namespace

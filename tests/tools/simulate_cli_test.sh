@@ -113,6 +113,36 @@ set -e
 [[ $status -eq 2 ]] || fail "bad scene exited $status, expected 2"
 grep -q "shot.spin" <<<"$msg" || fail "message does not name shot.spin: $msg"
 [[ -e "$work/never.json" || -e "$work/never.json.tmp" ]] && fail "output written for a bad scene"
+# The audit's reproductions: each refused with exit 2 naming the file, the key and the value as
+# written, and nothing written.
+refuse() {  # refuse NAME SCENE-TEXT EXPECTED-PART...
+  local name=$1 text=$2
+  shift 2
+  printf '%s\n' "$text" >"$work/$name.json"
+  set +e
+  msg=$("$baize" simulate "$work/$name.json" --json "$work/$name-out.json" 2>&1 >/dev/null)
+  status=$?
+  set -e
+  [[ $status -eq 2 ]] || fail "$name exited $status, expected 2: $msg"
+  for part in "$name.json: " "$@"; do
+    grep -qF -- "$part" <<<"$msg" || fail "$name: message lacks '$part': $msg"
+  done
+  [[ -e "$work/$name-out.json" || -e "$work/$name-out.json.tmp" ]] && fail "$name: output written"
+  return 0
+}
+base='"table": "pool-9ft", "ball_set": "pool", "rack": {"name": "9-ball"}'
+refuse fast "{$base, \"shot\": {\"aim_at\": \"1\", \"speed_mps\": 800}}" \
+  "shot.speed_mps = 800 is not allowed" "(0, 12.3] m/s"
+refuse steep "{$base, \"shot\": {\"aim_at\": \"1\", \"speed_mps\": 6, \"elevation_deg\": 95}}" \
+  "shot.elevation_deg = 95 is not allowed" "[0, 90) deg"
+refuse miscue "{$base, \"shot\": {\"aim_at\": \"1\", \"speed_mps\": 6, \"side\": 0.7}}" \
+  "shot.side = 0.7 is not allowed" "miscues"
+refuse jitter '{"table": "pool-9ft", "ball_set": "pool",
+ "rack": {"name": "9-ball", "jitter_seed": 7, "jitter_m": 0.01},
+ "shot": {"aim_at": "1", "speed_mps": 6}}' "rack.jitter_m = 0.01 is not allowed" "[0, 5e-04] m"
+refuse twice '{"table": "pool-9ft", "ball_set": "pool", "balls": {"cue": [-0.6, 0], "cue": [0, 0]},
+ "shot": {"heading_deg": 0, "speed_mps": 1}}' "balls.cue appears twice"
+
 set +e
 msg=$("$baize" simulate "$work/missing.json" 2>&1 >/dev/null); status=$?
 set -e

@@ -89,13 +89,8 @@ std::string runLine(const InputLine& line, const std::string& input_name, const 
   out["line"] = line.number;
   const std::string source = input_name + ":" + std::to_string(line.number);
   try {
-    nlohmann::json document;
-    try {
-      document = nlohmann::json::parse(line.text);
-    } catch (const nlohmann::json::exception& e) {
-      throw std::invalid_argument(source + ": not valid JSON (" + e.what() +
-                                  ") is not allowed: each line must be one JSON object");
-    }
+    const nlohmann::json document =
+        engine::JsonReader::parseText(line.text, source, "each line must be one JSON object");
     if (document.is_object() && document.contains("id")) out["id"] = document.at("id");
     const engine::Scene scene = lineScene(document, source, folder);
     const engine::SceneRun run = engine::runScene(scene);

@@ -16,9 +16,6 @@ using physics::BallState;
 // The strongest ball speed of the state shots, m/s: above any cue strike (a break is about
 // 10 m/s).
 constexpr double kMaxSpeed_mps = 16.0;
-// The strongest cue speed of the cue shots, m/s: a level centre strike sends the ball off at about
-// 1.3 times the cue speed, so this reaches the same 16 m/s.
-constexpr double kMaxCueSpeed_mps = 12.3;
 // The most spin on each axis of the state shots, in units of speed / R: beyond what a cue tip can
 // give (about 2.5).
 constexpr double kMaxSpinFactor = 3.0;
@@ -461,7 +458,9 @@ StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
   plan.elevation_deg = chance(3) ? 0 : uniform(0, kMaxElevation_deg);
   plan.shot.speed_mps = kind == StressShotKind::CueTiny
                             ? logUniform(kTinyCueSpeedMin_mps, kTinyCueSpeedMax_mps)
-                            : uniform(0.05, kMaxCueSpeed_mps);
+                            // Up to the fastest cue a scene may give, which sends the ball off
+                            // at about the state shots' 16 m/s (physics/cue_strike.h).
+                            : uniform(0.05, physics::kMaxCueSpeed_mps);
   const physics::CueStrikeParams cue_params = [&] {
     engine::Scene s;
     s.table = t.table;

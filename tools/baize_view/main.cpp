@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -13,6 +12,7 @@
 #include <optional>
 #include <sstream>
 
+#include "engine/json_reader.h"
 #include "engine/scene.h"
 #include "render/camera.h"
 #include "render/gl_renderer.h"
@@ -46,14 +46,7 @@ struct ViewFlags {
 };
 
 bool isResult(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the file");
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw std::invalid_argument(path + ": not valid JSON: " + e.what());
-  }
+  const nlohmann::json document = engine::JsonReader::parseFile(path);
   return document.is_object() && document.contains("trajectories");
 }
 
