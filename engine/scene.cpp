@@ -113,6 +113,14 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   } catch (const std::invalid_argument& e) {
     scene.reject("ball_set", std::string("a built-in ball set name or a .json file: ") + e.what());
   }
+  // Where the table meets the balls: its pockets must swallow a ball of this radius that passes
+  // their facings (a table file alone cannot say; engine/table.h).
+  try {
+    checkCapturesCoverOpenings(result.table, result.ball_set.radius_m);
+  } catch (const std::invalid_argument& e) {
+    scene.reject("table", "a table whose pockets catch the balls of the set '" +
+                              result.ball_set.name + "': " + e.what());
+  }
   if (scene.has("rack")) {
     const JsonReader rack = scene.object("rack");
     rack.requireKeys({"name"}, {"jitter_seed", "jitter_m"});
@@ -263,7 +271,15 @@ SceneRun runScene(const Scene& scene, bool record_trajectories) {
     balls.push_back(state);
     run.ball_ids.push_back(b.id);
   }
-  run.result = simulate(params, geometryOf(scene.table), balls);
+  // The event loop's refusals name balls by id; the scene's file is put in front of them.
+  const std::string prefix = scene.source.empty() ? "" : scene.source + ": ";
+  try {
+    run.result = simulate(params, geometryOf(scene.table), balls, run.ball_ids);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(prefix + e.what());
+  } catch (const BallLeftTableError& e) {
+    throw BallLeftTableError(prefix + e.what());
+  }
   return run;
 }
 

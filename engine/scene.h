@@ -25,8 +25,9 @@ struct Scene {
 };
 
 // Reads a scene file. Throws std::invalid_argument naming the file, the key and the value for an
-// unknown key, a missing one, a wrong type, an unknown table, ball set, rack or ball, overlapping
-// balls, a ball off the table, an impossible shot or a physics override out of its range.
+// unknown key, a missing one, a wrong type, an unknown table, ball set, rack or ball, a table whose
+// pockets would let the set's balls through (checkCapturesCoverOpenings), overlapping balls, a
+// ball off the table, an impossible shot or a physics override out of its range.
 Scene loadScene(const std::string& path);
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source);
 
@@ -45,7 +46,8 @@ struct SceneRun {
 };
 
 // Strikes the cue ball and simulates until everything is at rest (recording the balls' trajectories
-// when asked).
+// when asked). The event loop's std::invalid_argument and BallLeftTableError come with the scene's
+// source in front and name the balls by id.
 SceneRun runScene(const Scene& scene, bool record_trajectories = false);
 
 }  // namespace baize::engine

@@ -81,6 +81,8 @@ std::optional<ShotOutcome> runShot(Scene& scene, const physics::CueShot& shot, S
     ShotOutcome outcome = shotOutcome(run, scene.cue_ball);
     if (run_out != nullptr) *run_out = std::move(run);
     return outcome;
+  } catch (const BallLeftTableError&) {  // a fault, not a shot that merely failed
+    throw;
   } catch (const std::exception&) {  // a miscue or a run over the event budget: no outcome
     return std::nullopt;
   }

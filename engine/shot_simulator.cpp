@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "engine/contact_geometry.h"
@@ -358,10 +359,35 @@ Eigen::AlignedBox2d safeInterior(const TableGeometry& table, double R,
   return box;
 }
 
+// A ball in messages: by its id when the caller gave ids, else by its number.
+std::string ballName(const std::vector<std::string>& ids, std::size_t i) {
+  return ids.empty() ? "ball " + std::to_string(i) : "ball '" + ids[i] + "'";
+}
+
+// The runtime guard against balls leaving the table (BallLeftTableError). A ball on the table
+// keeps its centre R from the rails and enters a capture circle before the line closing a
+// pocket's opening, so no tolerance is needed at the outline.
+void requireOnTable(const std::vector<Eigen::Vector2d>& outline, const Event& event, int ball,
+                    bool pocketed, const BallState& state, const std::vector<std::string>& ids) {
+  if (pocketed || insideOutline(outline, state.position)) return;
+  throw BallLeftTableError(
+      ballName(ids, static_cast<std::size_t>(ball)) + " left the table: at t = " +
+      physics::valueText(event.time_s) + " s (a " + eventKindName(event.kind) +
+      " event) its centre [" + physics::valueText(state.position.x()) + ", " +
+      physics::valueText(state.position.y()) +
+      "] m is outside the table's cushion outline and not in a pocket (a capture circle that "
+      "does not cover its pocket's opening lets balls through)");
+}
+
 }  // namespace
 
 void validateSimulationInput(const SimulationParams& p, const TableGeometry& table,
-                             const std::vector<BallState>& balls) {
+                             const std::vector<BallState>& balls,
+                             const std::vector<std::string>& ball_ids) {
+  if (!ball_ids.empty() && ball_ids.size() != balls.size()) {
+    physics::rejectValue("number of ball ids", static_cast<double>(ball_ids.size()),
+                         "it must be 0 or the number of balls, " + std::to_string(balls.size()));
+  }
   physics::validateClothParams(p.cloth);
   physics::validateCushionParams(p.cushion);
   physics::validateBallBallParams(p.ball_ball);
@@ -392,7 +418,7 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
                            "a jaw needs a radius > 0 and an angle range of at most one turn");
     }
   }
-  auto who = [](std::size_t i) { return "ball " + std::to_string(i); };
+  auto who = [&](std::size_t i) { return ballName(ball_ids, i); };
   for (std::size_t i = 0; i < balls.size(); ++i) {
     try {
       physics::validateBallState(balls[i]);
@@ -437,7 +463,7 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
                         j = std::min(by_x[m].ball, by_x[k].ball);
       const double gap = (balls[i].position - balls[j].position).norm() - 2 * R;
       if (gap < -kContactSlack_m) {
-        physics::rejectValue(who(i) + " overlaps ball " + std::to_string(j) + ": their gap (m)",
+        physics::rejectValue(who(i) + " overlaps " + who(j) + ": their gap (m)",
                              gap, "balls may touch but not overlap (gap >= 0)");
       }
     }
@@ -500,6 +526,7 @@ TableGeometry rectangularTable(double length_m, double width_m) {
                     {{x, -y}, {x, y}, {-1, 0}},
                     {{x, y}, {-x, y}, {0, -1}},
                     {{-x, y}, {-x, -y}, {1, 0}}};
+  table.outline = cushionOutline(table.cushions);
   return table;
 }
 
@@ -521,6 +548,7 @@ TableGeometry geometryOf(const Table& table) {
   geometry.cushions = table.cushions;
   geometry.jaws = table.jaw_arcs;
   for (const Pocket& pocket : table.pockets) geometry.pockets.push_back(pocket.capture);
+  geometry.outline = cushionOutline(table.cushions);
   return geometry;
 }
 
@@ -550,8 +578,9 @@ const char* eventKindName(EventKind kind) {
 }
 
 SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
-                          const std::vector<BallState>& input) {
-  validateSimulationInput(p, table, input);
+                          const std::vector<BallState>& input,
+                          const std::vector<std::string>& ball_ids) {
+  validateSimulationInput(p, table, input, ball_ids);
   const double R = p.cushion.radius_m;
   SimulationResult result;
   const int n = static_cast<int>(input.size());
@@ -1029,6 +1058,14 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
       changed.push_back(best.other);
       is_changed[best.other] = 1;
       settle(best.other, now);
+    }
+    // Every ball that moves ends its motion at an event of its own, so checking the balls of each
+    // event finds any that left (one point-in-polygon test per ball per event).
+    if (!table.outline.empty()) {
+      requireOnTable(table.outline, event, best.ball, balls[best.ball].pocketed, a, ball_ids);
+      if (best.kind == EventKind::BallBall) {
+        requireOnTable(table.outline, event, best.other, false, balls[best.other].state, ball_ids);
+      }
     }
     if (p.record_trajectories &&
         best.kind != EventKind::StateChange) {  // a state change is in closed form

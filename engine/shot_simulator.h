@@ -30,17 +30,32 @@ namespace baize::engine {
 // line along the normal with its contact point between the ends, and a jaw when its centre is
 // radius + R from the jaw's centre in a direction within the jaw's angular range (the contact
 // normal then points from that centre to the ball).
+//
+// `outline` is the cushion outline (engine/table.h, cushionOutline) a ball that is not pocketed
+// must stay inside; simulate() fails with BallLeftTableError when a ball is found outside it after
+// an event. Empty: not checked (a hand-made geometry whose cushions do not enclose the table).
 struct TableGeometry {
   std::vector<CushionSegment> cushions;
   std::vector<JawArc> jaws;
   std::vector<Circle> pockets;
+  std::vector<Eigen::Vector2d> outline;
 };
 
-// The geometry of a table loaded from engine/table.h.
+// The geometry of a table loaded from engine/table.h, its cushion outline included.
 TableGeometry geometryOf(const Table& table);
 
-// A table with a rectangular playing area and no pockets: four cushions, inward normals.
+// A table with a rectangular playing area and no pockets: four cushions, inward normals, and the
+// rectangle as its outline.
 TableGeometry rectangularTable(double length_m, double width_m);
+
+// A ball that is not pocketed was found outside the table's cushion outline: it ran past a
+// pocket's facings without entering the capture circle (which validation of a scene's table
+// rules out: engine/table.h, checkCapturesCoverOpenings), or the event loop has a fault. Never a
+// result: the shot fails. The message names the ball, where and when it was and that it left.
+class BallLeftTableError : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
 
 // Constants of a shot. The ball radius and mass come from `cushion` (and must agree with `cloth`
 // and `ball_ball`, which simulate() checks).
@@ -139,14 +154,19 @@ struct SimulationResult {
 // The checks simulate() makes of its input, for other simulators of the same scenes: consistent
 // parameters (ball radius and mass agree across the models), a well-formed table, finite states,
 // no overlapping balls, no ball beyond a cushion or inside a jaw. Throws std::invalid_argument
-// naming the ball and the value.
+// naming the ball and the value. `ball_ids`, when given (one per ball), names the balls in
+// messages ("ball 'cue'"); otherwise they are named by number ("ball 0").
 void validateSimulationInput(const SimulationParams& params, const TableGeometry& table,
-                             const std::vector<physics::BallState>& balls);
+                             const std::vector<physics::BallState>& balls,
+                             const std::vector<std::string>& ball_ids = {});
 
 // Simulates until every ball is at rest or pocketed. Throws std::invalid_argument on invalid input
-// (parameters, a non-finite state, overlapping balls, a ball off the table) and std::runtime_error
-// when the shot needs more than max_events events.
+// (parameters, a non-finite state, overlapping balls, a ball off the table, `ball_ids` neither
+// empty nor one per ball), std::runtime_error when the shot needs more than max_events events and
+// BallLeftTableError when a ball leaves the table. Messages name balls as
+// validateSimulationInput() does.
 SimulationResult simulate(const SimulationParams& params, const TableGeometry& table,
-                          const std::vector<physics::BallState>& balls);
+                          const std::vector<physics::BallState>& balls,
+                          const std::vector<std::string>& ball_ids = {});
 
 }  // namespace baize::engine

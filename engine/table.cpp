@@ -1,6 +1,7 @@
 #include "engine/table.h"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -15,6 +16,13 @@ using Eigen::Vector2d;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadiansPerDegree = kPi / 180.0;
+// Significant digits of the limits a capture-circle refusal suggests: enough to land within a few
+// micrometres of the exact limit, few enough to type. They are rounded towards the allowed side.
+constexpr int kSuggestedLimitDigits = 6;
+
+// Where each pocket sits, in Table::pockets order (docs/tables.md).
+const char* const kPocketPlaces[] = {"corner at -x, -y", "side at -y",        "corner at +x, -y",
+                                     "corner at +x, +y", "side at +y",        "corner at -x, +y"};
 
 Vector2d leftNormal(const Vector2d& direction) { return Vector2d(-direction.y(), direction.x()); }
 Vector2d rightNormal(const Vector2d& direction) { return Vector2d(direction.y(), -direction.x()); }
@@ -258,7 +266,136 @@ SnookerMarkings readSnookerMarkings(const JsonReader& markings, const Table& tab
   return snooker;
 }
 
+// `value` rounded to kSuggestedLimitDigits significant digits, strictly above it (`up`) or below,
+// so that a limit a message suggests, used as written, satisfies a strict inequality.
+double roundedLimit(double value, bool up) {
+  if (!std::isfinite(value)) return value;
+  const double magnitude = value == 0 ? 0 : std::floor(std::log10(std::abs(value)));
+  const double scale = std::pow(10.0, kSuggestedLimitDigits - 1 - magnitude);
+  double units = up ? std::ceil(value * scale) : std::floor(value * scale);
+  if (up ? !(units / scale > value) : !(units / scale < value)) units += up ? 1 : -1;
+  return units / scale;
+}
+
+std::string pointText(const Vector2d& p) {
+  return "[" + physics::valueText(p.x()) + ", " + physics::valueText(p.y()) + "]";
+}
+
 }  // namespace
+
+void checkCapturesCoverOpenings(const Table& table, double R) {
+  if (!(R > 0 && std::isfinite(R))) {
+    physics::rejectValue("ball radius (m)", R, "it must be finite and > 0");
+  }
+  if (table.cushions.size() != 3 * table.pockets.size() || table.pockets.size() > 6) {
+    throw std::invalid_argument(table.source +
+                                ": the table's pockets and cushions are not laid out as "
+                                "engine/table.h lists them");
+  }
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    const CushionSegment& entry = table.cushions[3 * k];
+    const CushionSegment& exit = table.cushions[3 * k + 1];
+    // The closing line p(t) = a + t (b - a), t in [0, 1]. A facing's distance along its inward
+    // normal is linear in t; where it is at least R is a half-line of t.
+    const Vector2d a = entry.end_m, b = exit.start_m;
+    double lo = 0, hi = 1;
+    for (const CushionSegment* facing : {&entry, &exit}) {
+      const double at_a = facing->inward_normal.dot(a - facing->start_m);
+      const double slope = facing->inward_normal.dot(b - a);
+      if (slope > 0) {
+        lo = std::max(lo, (R - at_a) / slope);
+      } else if (slope < 0) {
+        hi = std::min(hi, (R - at_a) / slope);
+      } else if (!(at_a >= R)) {
+        hi = -1;
+      }
+    }
+    if (!(lo <= hi)) continue;  // no ball fits between the facings there: none reaches the line
+    const Pocket& pocket = table.pockets[k];
+    const Vector2d ends[2] = {a + lo * (b - a), a + hi * (b - a)};
+    std::size_t worst = 0;
+    double needed_m = 0;  // the smallest capture radius at this offset: the farther end's distance
+    for (std::size_t e = 0; e < 2; ++e) {
+      const double distance = (ends[e] - pocket.capture.centre_m).norm();
+      if (distance > needed_m) {
+        needed_m = distance;
+        worst = e;
+      }
+    }
+    if (needed_m < pocket.capture.radius_m) continue;
+
+    // The offsets at which this radius would do: |end - mouth - offset * axis| < radius at both
+    // ends, an interval around each end's depth behind the mouth (offsets are >= 0).
+    const double r = pocket.capture.radius_m;
+    double offset_lo = -1, offset_hi = std::numeric_limits<double>::infinity();
+    for (const Vector2d& end : ends) {
+      const Vector2d from_mouth = end - pocket.mouth_centre_m;
+      const double depth = from_mouth.dot(pocket.axis);
+      const double half_width_sq = r * r - (from_mouth.squaredNorm() - depth * depth);
+      if (!(half_width_sq > 0)) {
+        offset_hi = -1;
+        break;
+      }
+      offset_lo = std::max(offset_lo, depth - std::sqrt(half_width_sq));
+      offset_hi = std::min(offset_hi, depth + std::sqrt(half_width_sq));
+    }
+    const double lowest_offset = offset_lo < 0 ? 0 : roundedLimit(offset_lo, true);
+    const double highest_offset = roundedLimit(offset_hi, false);
+    const bool offset_would_do = offset_lo < offset_hi && lowest_offset <= highest_offset;
+    const double smallest_radius = roundedLimit(needed_m, true);
+
+    const bool corner = pocket.kind == PocketKind::Corner;
+    const PocketSpec& spec = corner ? table.corner_pocket : table.side_pocket;
+    const std::string key = std::string(corner ? "corner_pocket" : "side_pocket") +
+                            (offset_would_do ? ".capture_offset_m" : ".capture_radius_m");
+    const double value = offset_would_do ? spec.capture_offset_m : spec.capture_radius_m;
+    const std::string other = offset_would_do
+                                  ? "capture_radius_m = " + physics::valueText(r)
+                                  : "capture_offset_m = " + physics::valueText(spec.capture_offset_m);
+    std::string allowed =
+        "with " + other + " and balls of radius " + physics::valueText(R) +
+        " m, a ball can run between the facings of pocket " + std::to_string(k) + " (" +
+        kPocketPlaces[k] +
+        ") and leave the table without entering the capture circle: the circle must cover the "
+        "part of the line between the facings' deep ends that a ball centre reaches, but " +
+        pointText(ends[worst]) + " m is " + physics::valueText(needed_m) +
+        " m from its centre; ";
+    if (offset_would_do) {
+      allowed += "capture_offset_m must lie in [" + physics::valueText(lowest_offset) + ", " +
+                 physics::valueText(highest_offset) +
+                 "] m at this radius, or capture_radius_m must be at least " +
+                 physics::valueText(smallest_radius) + " m at this offset";
+    } else {
+      allowed += "capture_radius_m must be at least " + physics::valueText(smallest_radius) +
+                 " m at this offset";
+    }
+    throw std::invalid_argument(table.source + ": " + key + " = " + physics::valueText(value) +
+                                " is not allowed: " + allowed);
+  }
+}
+
+std::vector<Eigen::Vector2d> cushionOutline(const std::vector<CushionSegment>& cushions) {
+  std::vector<Eigen::Vector2d> outline;
+  outline.reserve(2 * cushions.size());
+  for (const CushionSegment& c : cushions) {
+    outline.push_back(c.start_m);
+    outline.push_back(c.end_m);
+  }
+  return outline;
+}
+
+bool insideOutline(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vector2d& point) {
+  bool inside = false;
+  for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+    const Vector2d& p = outline[i];
+    const Vector2d& q = outline[j];
+    if ((p.y() > point.y()) != (q.y() > point.y()) &&
+        point.x() < (q.x() - p.x()) * (point.y() - p.y()) / (q.y() - p.y()) + p.x()) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
 
 Eigen::Vector2d JawArc::pointAt(double angle_rad) const {
   return centre_m + radius_m * Eigen::Vector2d(std::cos(angle_rad), std::sin(angle_rad));
@@ -269,6 +406,7 @@ Table tableFromJson(const nlohmann::json& document, const std::string& source) {
   root.requireExactKeys({"name", "kind", "description", "playing_surface",
                          "cushion_contact_height_m", "corner_pocket", "side_pocket", "markings"});
   Table table;
+  table.source = source;
   table.name = root.text("name");
   table.description = root.text("description");
   const std::string kind = root.text("kind");

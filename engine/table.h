@@ -79,6 +79,7 @@ struct SnookerMarkings {
 };
 
 struct Table {
+  std::string source;  // the file it was read from (or the document's name), for messages
   std::string name;
   std::string description;
   TableKind kind = TableKind::Pool;
@@ -107,6 +108,27 @@ Table tableFromJson(const nlohmann::json& document, const std::string& source);
 
 // Reads and validates a table file.
 Table loadTable(const std::string& path);
+
+// Checks that the table's pockets swallow every ball of radius `ball_radius_m` that passes their
+// facings: the part of the line closing a pocket's opening (from the deep end of one facing to the
+// deep end of the other) that a ball centre can reach, R clear of both facings' lines, must lie
+// strictly inside the pocket's capture circle, or a ball could run past the facings without
+// falling and leave the table. (The circle is convex, so checking the reachable part's two ends
+// is exact.) A table file cannot know the radius, so scenes check this where the table meets the
+// ball set. Throws std::invalid_argument naming the table's source, the pocket, the key
+// (corner_pocket.capture_offset_m or ...capture_radius_m) and its value, and the offsets or the
+// smallest radius that would cover the opening.
+void checkCapturesCoverOpenings(const Table& table, double ball_radius_m);
+
+// The cushion outline: the ends of the straight cushion noses in turn, for noses listed in outline
+// order (Table::cushions), so that jaw roundings are cut by their chords (which lie behind them)
+// and pocket openings are closed by the line between the facings' deep ends. A ball centre that
+// is not in a pocket stays inside it.
+std::vector<Eigen::Vector2d> cushionOutline(const std::vector<CushionSegment>& cushions);
+
+// Whether `point` lies inside the simple polygon `outline` (crossing-number test; points on the
+// boundary may go either way).
+bool insideOutline(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vector2d& point);
 
 // The shipped tables: "pool-7ft", "pool-8ft", "pool-9ft", "snooker-12ft".
 std::vector<std::string> builtinTableNames();

@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "engine/ball_set.h"
 #include "tests/engine/error_test_support.h"
 
 namespace baize::engine {
@@ -74,6 +75,41 @@ bool near(const Vector2d& a, const Vector2d& b) { return (a - b).norm() <= kRoun
 bool arcJoins(const JawArc& arc, const Vector2d& p, const Vector2d& q) {
   const Vector2d a = arc.pointAt(arc.start_angle_rad), b = arc.pointAt(arc.end_angle_rad);
   return (near(a, p) && near(b, q)) || (near(a, q) && near(b, p));
+}
+
+// Points sampled along a pocket's closing line for the independent capture check below.
+constexpr int kClosingLineSamples = 100000;
+
+// The largest distance from pocket k's capture-circle centre of the points of its closing line
+// (from the deep end of one facing to the deep end of the other) that keep R from both facings'
+// lines, by sampling, as the stress program once checked it; -1 when no point does. The exact
+// largest distance exceeds this by at most the sample spacing (distance is 1-Lipschitz).
+double sampledReach(const Table& table, std::size_t k, double R) {
+  const CushionSegment& entry = table.cushions[3 * k];
+  const CushionSegment& exit = table.cushions[3 * k + 1];
+  double farthest = -1;
+  for (int i = 0; i <= kClosingLineSamples; ++i) {
+    const Vector2d p = entry.end_m + (static_cast<double>(i) / kClosingLineSamples) *
+                                         (exit.start_m - entry.end_m);
+    if (entry.inward_normal.dot(p - entry.start_m) >= R &&
+        exit.inward_normal.dot(p - exit.start_m) >= R) {
+      farthest = std::max(farthest, (p - table.pockets[k].capture.centre_m).norm());
+    }
+  }
+  return farthest;
+}
+
+// The spacing of sampledReach's samples along pocket k's closing line, m.
+double sampleSpacing(const Table& table, std::size_t k) {
+  return (table.cushions[3 * k + 1].start_m - table.cushions[3 * k].end_m).norm() /
+         kClosingLineSamples;
+}
+
+// The number that follows `label` in `message` (a limit the message suggests); NaN if none.
+double numberAfter(const std::string& message, const std::string& label) {
+  const std::size_t at = message.find(label);
+  if (at == std::string::npos) return std::numeric_limits<double>::quiet_NaN();
+  return std::stod(message.substr(at + label.size()));
 }
 
 class BuiltinTableTest : public ::testing::TestWithParam<std::string> {
@@ -231,6 +267,44 @@ void expectMirrorSymmetric(const Table& table,
       }
     }
     EXPECT_EQ(matches, 1);
+  }
+}
+
+// Every shipped table holds both shipped ball sets: a ball passing the facings is caught. Checked
+// by the engine and, independently, by sampling the closing lines.
+TEST_P(BuiltinTableTest, CaptureCirclesCoverThePocketOpeningsForBothShippedBallSets) {
+  for (const char* set : {"pool", "snooker"}) {
+    const double R = builtinBallSet(set).radius_m;
+    EXPECT_NO_THROW(checkCapturesCoverOpenings(table, R)) << set;
+    for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+      const double reach = sampledReach(table, k, R);
+      EXPECT_GT(reach, 0) << set << ", pocket " << k << ": a ball passes the facings";
+      EXPECT_LT(reach + sampleSpacing(table, k), table.pockets[k].capture.radius_m)
+          << set << ", pocket " << k;
+    }
+  }
+}
+
+// The cushion outline holds the table's centre and every place a ball rests on the playing
+// surface, and not a point just beyond a pocket's closing line or behind a rail.
+TEST_P(BuiltinTableTest, CushionOutlineHoldsThePlayingSurfaceAndEndsAtTheClosingLines) {
+  const std::vector<Vector2d> outline = cushionOutline(table.cushions);
+  ASSERT_EQ(outline.size(), 2 * table.cushions.size());
+  const double R = builtinBallSet(table.kind == TableKind::Pool ? "pool" : "snooker").radius_m;
+  const double x = table.length_m / 2 - R, y = table.width_m / 2 - R;
+  for (const Vector2d& p : {Vector2d(0, 0), Vector2d(x, y), Vector2d(-x, y), Vector2d(x, -y),
+                            Vector2d(-x, -y), Vector2d(0, y), Vector2d(0, -y)}) {
+    EXPECT_TRUE(insideOutline(outline, p)) << p.transpose();
+  }
+  // Behind a long rail (between the corner and side pockets) and behind a short one.
+  EXPECT_FALSE(insideOutline(outline, Vector2d(table.length_m / 4, table.width_m / 2 + 1e-3)));
+  EXPECT_FALSE(insideOutline(outline, Vector2d(table.length_m / 2 + 1e-3, 0)));
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    const Pocket& pocket = table.pockets[k];
+    const Vector2d closing_middle =
+        (table.cushions[3 * k].end_m + table.cushions[3 * k + 1].start_m) / 2;
+    EXPECT_TRUE(insideOutline(outline, closing_middle - 1e-3 * pocket.axis)) << "pocket " << k;
+    EXPECT_FALSE(insideOutline(outline, closing_middle + 1e-3 * pocket.axis)) << "pocket " << k;
   }
 }
 
@@ -456,6 +530,127 @@ TEST_F(BadTableFileTest, MarkingsMustMatchTheKind) {
   const std::string message = loadError();
   EXPECT_MENTIONS(message, "markings.diamond");  // one of the pool keys, whichever comes first
   EXPECT_MENTIONS(message, "unknown key");
+}
+
+// A table that loads but whose capture circles miss part of the openings a pool ball reaches.
+class CaptureCircleTest : public BadTableFileTest {
+ protected:
+  const double R = builtinBallSet("pool").radius_m;
+
+  Table written() {
+    std::ofstream(path) << document.dump(2);
+    return loadTable(path);
+  }
+  // The refusal for pool balls, or "" when the table is accepted.
+  std::string refusal() {
+    const Table table = written();
+    try {
+      checkCapturesCoverOpenings(table, R);
+    } catch (const std::invalid_argument& error) {
+      return error.what();
+    }
+    return "";
+  }
+  // The largest sampled reach over the corner pockets (their geometry is mirror images).
+  double cornerReach(double* spacing) {
+    const Table table = written();
+    double reach = -1;
+    for (std::size_t k : {0, 2, 3, 5}) {
+      reach = std::max(reach, sampledReach(table, k, R));
+      *spacing = sampleSpacing(table, k);
+    }
+    return reach;
+  }
+};
+
+TEST_F(CaptureCircleTest, ACaptureCircleFarBehindTheMouthIsRefusedNamingKeyValueAndLimits) {
+  document["corner_pocket"]["capture_offset_m"] = 0.5;
+  const std::string message = refusal();
+  EXPECT_MENTIONS(message, path + ": corner_pocket.capture_offset_m = 0.5 is not allowed");
+  EXPECT_MENTIONS(message, "pocket 0 (corner at -x, -y)");
+  EXPECT_MENTIONS(message, "capture_radius_m = 0.04 and balls of radius 0.028575 m");
+  EXPECT_MENTIONS(message, "leave the table");
+  // The limits it suggests work as written: either end of the offsets, or the radius.
+  const double lowest = numberAfter(message, "capture_offset_m must lie in [");
+  const double radius = numberAfter(message, "capture_radius_m must be at least ");
+  ASSERT_TRUE(std::isfinite(lowest) && std::isfinite(radius)) << message;
+  const std::size_t comma = message.find(", ", message.find("must lie in ["));
+  const double upper = std::stod(message.substr(comma + 2));
+  EXPECT_LT(lowest, 0.045);  // the shipped offset is among them
+  EXPECT_GT(upper, 0.045);
+  for (const double offset : {lowest, upper}) {
+    document["corner_pocket"]["capture_offset_m"] = offset;
+    EXPECT_EQ(refusal(), "") << "offset " << offset;
+  }
+  document["corner_pocket"]["capture_offset_m"] = 0.5;
+  document["corner_pocket"]["capture_radius_m"] = radius;
+  EXPECT_EQ(refusal(), "") << "radius " << radius;
+  // The suggested radius is the reach at this offset, rounded up to a few micrometres.
+  double spacing = 0;
+  const double reach = cornerReach(&spacing);
+  EXPECT_GE(radius, reach);
+  EXPECT_LE(radius, reach + spacing + 1e-5 * reach);
+}
+
+TEST_F(CaptureCircleTest, ATooSmallCaptureRadiusIsRefusedNamingKeyValueAndTheRadiusNeeded) {
+  document["corner_pocket"]["capture_radius_m"] = 0.02;
+  const std::string message = refusal();
+  EXPECT_MENTIONS(message, path + ": corner_pocket.capture_radius_m = 0.02 is not allowed");
+  EXPECT_MENTIONS(message, "capture_offset_m = 0.045");
+  // No offset lets a 0.02 m circle cover an opening 0.044 m across: only the radius is suggested.
+  EXPECT_EQ(message.find("must lie in"), std::string::npos) << message;
+  const double radius = numberAfter(message, "capture_radius_m must be at least ");
+  double spacing = 0;
+  const double reach = cornerReach(&spacing);
+  EXPECT_GE(radius, reach);
+  EXPECT_LE(radius, reach + spacing + 1e-5 * reach);
+}
+
+TEST_F(CaptureCircleTest, ASidePocketIsNamedByItsOwnKey) {
+  document["side_pocket"]["capture_offset_m"] = 0;
+  const std::string message = refusal();
+  EXPECT_MENTIONS(message, "side_pocket.capture_offset_m = 0 is not allowed");
+  EXPECT_MENTIONS(message, "pocket 1 (side at -y)");
+}
+
+// The boundary, found independently by sampling: a circle just reaching past the farthest point a
+// ball centre reaches is accepted, one just short of it refused.
+TEST_F(CaptureCircleTest, ACircleJustCoveringTheReachablePartIsAcceptedAndJustShortRefused) {
+  double spacing = 0;
+  const double reach = cornerReach(&spacing);
+  ASSERT_GT(reach, 0);
+  document["corner_pocket"]["capture_radius_m"] = reach + 2 * spacing;
+  EXPECT_EQ(refusal(), "");
+  // Just short, a slightly deeper circle would still do: the refusal may name either key.
+  document["corner_pocket"]["capture_radius_m"] = reach * (1 - 1e-9);
+  const std::string message = refusal();
+  EXPECT_MENTIONS(message, path + ": corner_pocket.capture_");
+  EXPECT_MENTIONS(message, "capture_radius_m must be at least");
+}
+
+// Only what a ball centre reaches needs covering: balls too big to pass the facings' deep ends
+// need no capture circle there, and a smaller ball needs more than a bigger one.
+TEST_F(CaptureCircleTest, WhatNeedsCoveringDependsOnTheBallRadius) {
+  document["corner_pocket"]["capture_radius_m"] = 0.02;
+  document["side_pocket"]["capture_radius_m"] = 0.02;
+  const Table table = written();
+  EXPECT_THROW(checkCapturesCoverOpenings(table, R), std::invalid_argument);
+  const double too_big_to_pass_m = 0.06;  // the closing lines are about 0.1 m long
+  for (std::size_t k = 0; k < table.pockets.size(); ++k)
+    ASSERT_LT(sampledReach(table, k, too_big_to_pass_m), 0) << "pocket " << k;
+  EXPECT_NO_THROW(checkCapturesCoverOpenings(table, too_big_to_pass_m));
+  const Table shipped = builtinTable("pool-9ft");
+  EXPECT_GT(sampledReach(shipped, 0, 0.5 * R), sampledReach(shipped, 0, R));
+}
+
+TEST_F(CaptureCircleTest, ABallRadiusThatIsNotPositiveIsRefused) {
+  const Table table = written();
+  EXPECT_MENTIONS(invalidArgumentMessage([&] { checkCapturesCoverOpenings(table, 0); }),
+                  "ball radius (m) = 0");
+  EXPECT_MENTIONS(invalidArgumentMessage([&] {
+                    checkCapturesCoverOpenings(table, std::numeric_limits<double>::infinity());
+                  }),
+                  "ball radius (m) = inf");
 }
 
 }  // namespace

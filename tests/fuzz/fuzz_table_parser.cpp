@@ -17,6 +17,8 @@ namespace {
 // How far a cushion's inward normal may be from unit length: it is a normalised difference of two
 // points, a few ulps off at most.
 constexpr double kUnitTolerance = 1e-12;
+// The shipped pool balls' radius, m: the capture check is exercised for it.
+constexpr double kPoolBallRadius_m = 0.028575;
 
 void checkFinite(const Eigen::Vector2d& p, const char* what) {
   baize::fuzz::check(std::isfinite(p.x()) && std::isfinite(p.y()),
@@ -45,5 +47,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   for (const auto& j : geometry.jaws) checkFinite(j.centre_m, "jaw centre");
   for (const auto& p : geometry.pockets) checkFinite(p.centre_m, "pocket centre");
+  baize::fuzz::check(geometry.outline.size() == 2 * geometry.cushions.size(),
+                     "the cushion outline is not the cushions' ends");
+  // Where a scene meets the table: for a pool ball the capture circles cover the openings or the
+  // table is refused with std::invalid_argument (anything else escapes as a finding).
+  try {
+    baize::engine::checkCapturesCoverOpenings(table, kPoolBallRadius_m);
+  } catch (const std::invalid_argument&) {
+  }
   return 0;
 }

@@ -148,6 +148,30 @@ msg=$("$baize" simulate "$work/missing.json" 2>&1 >/dev/null); status=$?
 set -e
 [[ $status -ne 0 ]] || fail "a missing scene file was accepted"
 grep -q "missing.json" <<<"$msg" || fail "message does not name the file: $msg"
+# A table file whose corner capture circle sits far behind the mouth (or is too small) would let
+# the cue ball run out through the corner pocket: the scene is refused (exit 2) naming the table
+# file, the key and its value, instead of a ball stopping metres off the table with exit 0.
+for change in "capture_offset_m 0.5" "capture_radius_m 0.02"; do
+  set -- $change
+  python3 - "$root/assets/tables/pool-9ft.json" "$work/leaky.json" "$1" "$2" <<'PY'
+import json, sys
+table = json.load(open(sys.argv[1]))
+table["corner_pocket"][sys.argv[3]] = float(sys.argv[4])
+json.dump(table, open(sys.argv[2], "w"))
+PY
+  cat >"$work/leaky-scene.json" <<'JSON'
+{"table": "leaky.json", "ball_set": "pool", "balls": {"cue": [0.9, 0.3]},
+ "shot": {"heading_deg": 45, "speed_mps": 3}}
+JSON
+  set +e
+  msg=$("$baize" simulate "$work/leaky-scene.json" 2>&1 >/dev/null); status=$?
+  set -e
+  [[ $status -eq 2 ]] || fail "a table letting balls out ($change) exited $status, expected 2"
+  grep -q "leaky.json: corner_pocket.$1 = $2 is not allowed" <<<"$msg" ||
+    fail "message does not name the table file, key and value ($change): $msg"
+done
+set --
+
 # baize bench shots, smoke size: one row per shipped scene plus the random set, the CSV as printed.
 "$baize" bench shots --repeat 1 --random-shots 20 --csv "$work/shots.csv" >/dev/null ||
   fail "bench shots exited $?"

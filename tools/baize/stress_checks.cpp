@@ -67,6 +67,9 @@ ShotOutcome checkShot(const StressTable& table, const engine::SimulationParams& 
   engine::SimulationResult result;
   try {
     result = engine::simulate(params, table.geometry, input);
+  } catch (const engine::BallLeftTableError& e) {  // the event loop's own escape guard
+    check.fail("escape", e.what());
+    return out;
   } catch (const std::runtime_error& e) {
     check.fail("hang", e.what());
     return out;

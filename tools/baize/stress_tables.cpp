@@ -13,21 +13,6 @@ namespace {
 constexpr double kRectangleLength_m = 2.54;
 constexpr double kRectangleWidth_m = 1.27;
 
-// Crossing-number test: whether p lies inside the simple polygon (boundary points may go
-// either way; callers only care about centres at least R - slack from the boundary).
-bool insidePolygon(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Eigen::Vector2d& a = polygon[i];
-    const Eigen::Vector2d& b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      inside = !inside;
-    }
-  }
-  return inside;
-}
-
 // Whether the direction from the jaw's centre to p lies within the jaw's angular range.
 bool withinJawRange(const engine::JawArc& jaw, const Eigen::Vector2d& p) {
   const Eigen::Vector2d d = p - jaw.centre_m;
@@ -37,47 +22,13 @@ bool withinJawRange(const engine::JawArc& jaw, const Eigen::Vector2d& p) {
   return angle <= jaw.end_angle_rad;
 }
 
-// The cushion noses are listed in outline order, counterclockwise (engine/table.h), so their ends
-// in turn trace the outline with jaw roundings cut by chords and pocket openings closed.
-void traceOutline(StressTable* t) {
-  for (const engine::CushionSegment& c : t->geometry.cushions) {
-    t->outline.push_back(c.start_m);
-    t->outline.push_back(c.end_m);
-  }
-  if (t->outline.size() < 3 || !insidePolygon(t->outline, Eigen::Vector2d::Zero())) {
-    throw std::invalid_argument("table " + t->name +
+// The outline is the engine's (TableGeometry::outline); it must surround the table's centre, or
+// every ball would count as off the table.
+void checkOutline(const StressTable& t) {
+  const std::vector<Eigen::Vector2d>& outline = t.geometry.outline;
+  if (outline.size() < 3 || !engine::insideOutline(outline, Eigen::Vector2d::Zero())) {
+    throw std::invalid_argument("table " + t.name +
                                 ": its cushion outline does not surround the table's centre");
-  }
-}
-
-// The escape check's premise (stress_tables.h): a ball centre reaching the line that closes a
-// pocket's opening, R clear of both facings, is already inside the pocket's capture circle. Checked
-// at kCaptureSamples points along each closing line; a table that breaks it is refused.
-constexpr int kCaptureSamples = 1000;
-
-void checkCapturesCoverOpenings(const StressTable& t) {
-  const double R = t.params.cushion.radius_m;
-  const std::vector<engine::CushionSegment>& noses = t.geometry.cushions;
-  for (std::size_t k = 0; k < t.table.pockets.size(); ++k) {
-    if (noses.size() < 3 * k + 2 || noses[3 * k].pocket != static_cast<int>(k) ||
-        noses[3 * k + 1].pocket != static_cast<int>(k)) {
-      throw std::invalid_argument("table " + t.name + ": pocket " + std::to_string(k) +
-                                  "'s facings are not where engine/table.h lists them");
-    }
-    const engine::CushionSegment& entry = noses[3 * k];
-    const engine::CushionSegment& exit = noses[3 * k + 1];
-    for (int i = 0; i <= kCaptureSamples; ++i) {
-      const Eigen::Vector2d p =
-          entry.end_m + (static_cast<double>(i) / kCaptureSamples) * (exit.start_m - entry.end_m);
-      const bool reachable = entry.inward_normal.dot(p - entry.start_m) >= R &&
-                             exit.inward_normal.dot(p - exit.start_m) >= R;
-      if (reachable &&
-          (p - t.table.pockets[k].capture.centre_m).norm() >= t.table.pockets[k].capture.radius_m) {
-        throw std::invalid_argument(
-            "table " + t.name + ": a ball can pass the ends of pocket " + std::to_string(k) +
-            "'s facings outside its capture circle, so escapes cannot be told from pocketed balls");
-      }
-    }
   }
 }
 
@@ -105,9 +56,10 @@ StressTable makeStressTable(StressTableId id) {
     t.ball_set = scene.ball_set;
     t.geometry = engine::geometryOf(scene.table);
     t.params = engine::simulationParamsFor(scene);
+    // The escape check's premise (stress_tables.h), as a scene on this table checks it.
+    engine::checkCapturesCoverOpenings(t.table, t.ball_set.radius_m);
   }
-  traceOutline(&t);
-  checkCapturesCoverOpenings(t);
+  checkOutline(t);
   return t;
 }
 
@@ -120,8 +72,7 @@ StressTable stressTableOfScene(const engine::Scene& scene) {
   t.ball_set = scene.ball_set;
   t.geometry = engine::geometryOf(scene.table);
   t.params = engine::simulationParamsFor(scene);
-  traceOutline(&t);
-  checkCapturesCoverOpenings(t);
+  checkOutline(t);  // the escape check's premise was checked when the scene was loaded
   return t;
 }
 
@@ -138,7 +89,7 @@ std::string offTableReason(const StressTable& table, const Eigen::Vector2d& cent
   const double R = table.params.cushion.radius_m;
   std::ostringstream why;
   why.precision(17);
-  if (!insidePolygon(table.outline, centre)) {
+  if (!engine::insideOutline(table.geometry.outline, centre)) {
     why << "centre outside the cushion outline";
     return why.str();
   }

@@ -4,16 +4,19 @@
 //
 // "On the table" (docs/engine.md, "Stress and verification"): a ball that has not fallen into a
 // pocket must have its centre
-//   1. inside the cushion outline: the polygon through the ends of every straight cushion nose in
-//      outline order (rails and pocket facings; a jaw's rounding is replaced by its chord, which
-//      lies behind the rounding, and each pocket's opening is closed by the straight line from
-//      the deep end of one facing to the deep end of the other), and
+//   1. inside the cushion outline (engine/table.h, cushionOutline; TableGeometry::outline): the
+//      polygon through the ends of every straight cushion nose in outline order (rails and pocket
+//      facings; a jaw's rounding is replaced by its chord, which lies behind the rounding, and each
+//      pocket's opening is closed by the straight line from the deep end of one facing to the deep
+//      end of the other), and
 //   2. not closer than R to any straight cushion where its contact point would lie between the
 //      cushion's ends, nor closer than jaw radius + R to a jaw's centre within the jaw's angular
 //      range (the contacts the event loop models; simulate() refuses the same as input).
 // A ball running into a pocket passes the mouth between the facings and enters the capture circle
-// before it reaches the closing line (on the shipped tables the capture circles cover the throat
-// there), so a ball centre beyond that line that is not pocketed has left the table.
+// before it reaches the closing line (the engine refuses tables whose capture circles do not cover
+// the throat there for the balls in use: engine/table.h, checkCapturesCoverOpenings), so a ball
+// centre beyond that line that is not pocketed has left the table. simulate() itself fails on
+// condition 1 (BallLeftTableError); the stress checks add condition 2 and the overlap tolerance.
 #pragma once
 
 #include <Eigen/Core>
@@ -36,8 +39,7 @@ struct StressTable {
   engine::Table table;   // for the rectangle: only length_m and width_m are set
   engine::BallSet ball_set;
   engine::TableGeometry geometry;
-  engine::SimulationParams params;       // as a scene on this table has them by default
-  std::vector<Eigen::Vector2d> outline;  // condition 1 above, counterclockwise
+  engine::SimulationParams params;  // as a scene on this table has them by default
 };
 
 // The table by id (built once per call: callers keep it).
