@@ -367,9 +367,12 @@ std::string ballName(const std::vector<std::string>& ids, std::size_t i) {
 // The runtime guard against balls leaving the table (BallLeftTableError). A ball on the table
 // keeps its centre R from the rails and enters a capture circle before the line closing a
 // pocket's opening, so no tolerance is needed at the outline.
-void requireOnTable(const std::vector<Eigen::Vector2d>& outline, const Event& event, int ball,
-                    bool pocketed, const BallState& state, const std::vector<std::string>& ids) {
-  if (pocketed || insideOutline(outline, state.position)) return;
+void requireOnTable(const TableGeometry& table, const Event& event, int ball, bool pocketed,
+                    const BallState& state, const std::vector<std::string>& ids) {
+  if (pocketed || table.rail_box.contains(state.position) ||
+      insideOutline(table.outline, state.position)) {
+    return;
+  }
   throw BallLeftTableError(
       ballName(ids, static_cast<std::size_t>(ball)) + " left the table: at t = " +
       physics::valueText(event.time_s) + " s (a " + eventKindName(event.kind) +
@@ -527,6 +530,7 @@ TableGeometry rectangularTable(double length_m, double width_m) {
                     {{x, y}, {-x, y}, {0, -1}},
                     {{-x, y}, {-x, -y}, {1, 0}}};
   table.outline = cushionOutline(table.cushions);
+  table.rail_box = railBoxInsideOutline(table.outline);
   return table;
 }
 
@@ -549,6 +553,7 @@ TableGeometry geometryOf(const Table& table) {
   geometry.jaws = table.jaw_arcs;
   for (const Pocket& pocket : table.pockets) geometry.pockets.push_back(pocket.capture);
   geometry.outline = cushionOutline(table.cushions);
+  geometry.rail_box = railBoxInsideOutline(geometry.outline);
   return geometry;
 }
 
@@ -1062,9 +1067,9 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     // Every ball that moves ends its motion at an event of its own, so checking the balls of each
     // event finds any that left (one point-in-polygon test per ball per event).
     if (!table.outline.empty()) {
-      requireOnTable(table.outline, event, best.ball, balls[best.ball].pocketed, a, ball_ids);
+      requireOnTable(table, event, best.ball, balls[best.ball].pocketed, a, ball_ids);
       if (best.kind == EventKind::BallBall) {
-        requireOnTable(table.outline, event, best.other, false, balls[best.other].state, ball_ids);
+        requireOnTable(table, event, best.other, false, balls[best.other].state, ball_ids);
       }
     }
     if (p.record_trajectories &&

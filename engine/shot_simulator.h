@@ -34,11 +34,13 @@ namespace baize::engine {
 // `outline` is the cushion outline (engine/table.h, cushionOutline) a ball that is not pocketed
 // must stay inside; simulate() fails with BallLeftTableError when a ball is found outside it after
 // an event. Empty: not checked (a hand-made geometry whose cushions do not enclose the table).
+// `rail_box` (railBoxInsideOutline) lies inside it: balls there skip the polygon test.
 struct TableGeometry {
   std::vector<CushionSegment> cushions;
   std::vector<JawArc> jaws;
   std::vector<Circle> pockets;
   std::vector<Eigen::Vector2d> outline;
+  Eigen::AlignedBox2d rail_box;  // empty: every check takes the polygon test
 };
 
 // The geometry of a table loaded from engine/table.h, its cushion outline included.

@@ -397,6 +397,53 @@ bool insideOutline(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vec
   return inside;
 }
 
+// The rail box is shrunk by this much, m, so that the rails on its sides do not count as crossing
+// it and points in it lie strictly inside the outline: far below any ball's size, far above the
+// rounding of table coordinates (~1e-16 m).
+constexpr double kRailBoxInset_m = 1e-9;
+
+Eigen::AlignedBox2d railBoxInsideOutline(const std::vector<Vector2d>& outline) {
+  Eigen::AlignedBox2d box;
+  for (const Vector2d& p : outline) box.extend(p);
+  const std::size_t n = outline.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vector2d& p = outline[i];
+    const Vector2d& q = outline[(i + 1) % n];
+    // Counterclockwise: the inside lies to the left of each edge.
+    if (p.y() == q.y() && p.x() != q.x()) {
+      if (q.x() > p.x()) box.min().y() = std::max(box.min().y(), p.y());
+      else box.max().y() = std::min(box.max().y(), p.y());
+    } else if (p.x() == q.x() && p.y() != q.y()) {
+      if (q.y() > p.y()) box.max().x() = std::min(box.max().x(), p.x());
+      else box.min().x() = std::max(box.min().x(), p.x());
+    }
+  }
+  const Vector2d inset(kRailBoxInset_m, kRailBoxInset_m);
+  box = Eigen::AlignedBox2d(box.min() + inset, box.max() - inset);
+  if (n < 3 || box.isEmpty()) return Eigen::AlignedBox2d();
+  for (auto corner : {Eigen::AlignedBox2d::BottomLeft, Eigen::AlignedBox2d::BottomRight,
+                      Eigen::AlignedBox2d::TopRight, Eigen::AlignedBox2d::TopLeft}) {
+    if (!insideOutline(outline, box.corner(corner))) return Eigen::AlignedBox2d();
+  }
+  // No edge may reach into the box (Liang-Barsky: the part of the edge within the box's slabs).
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vector2d& p = outline[i];
+    const Vector2d d = outline[(i + 1) % n] - p;
+    double t0 = 0, t1 = 1;
+    for (int axis = 0; axis < 2 && t0 <= t1; ++axis) {
+      if (d[axis] == 0) {
+        if (p[axis] <= box.min()[axis] || p[axis] >= box.max()[axis]) t0 = 2;  // outside the slab
+        continue;
+      }
+      double a = (box.min()[axis] - p[axis]) / d[axis], b = (box.max()[axis] - p[axis]) / d[axis];
+      if (a > b) std::swap(a, b);
+      t0 = std::max(t0, a), t1 = std::min(t1, b);
+    }
+    if (t0 < t1) return Eigen::AlignedBox2d();
+  }
+  return box;
+}
+
 Eigen::Vector2d JawArc::pointAt(double angle_rad) const {
   return centre_m + radius_m * Eigen::Vector2d(std::cos(angle_rad), std::sin(angle_rad));
 }

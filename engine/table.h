@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -129,6 +130,11 @@ std::vector<Eigen::Vector2d> cushionOutline(const std::vector<CushionSegment>& c
 // Whether `point` lies inside the simple polygon `outline` (crossing-number test; points on the
 // boundary may go either way).
 bool insideOutline(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vector2d& point);
+
+// A box wholly inside a counterclockwise `outline`, bounded by its axis-aligned edges (a table's
+// rails), so that a point in it needs no polygon test; empty when that box is not inside (no edge
+// may cross it and its corners must be inside).
+Eigen::AlignedBox2d railBoxInsideOutline(const std::vector<Eigen::Vector2d>& outline);
 
 // The shipped tables: "pool-7ft", "pool-8ft", "pool-9ft", "snooker-12ft".
 std::vector<std::string> builtinTableNames();

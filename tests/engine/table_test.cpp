@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -283,6 +284,36 @@ TEST_P(BuiltinTableTest, CaptureCirclesCoverThePocketOpeningsForBothShippedBallS
           << set << ", pocket " << k;
     }
   }
+}
+
+// The box of the rails lies inside the outline and spans the playing surface between the noses:
+// every point sampled in it is inside by the polygon test too.
+TEST_P(BuiltinTableTest, RailBoxIsTheNoseRectangleAndLiesInsideTheOutline) {
+  const std::vector<Vector2d> outline = cushionOutline(table.cushions);
+  const Eigen::AlignedBox2d box = railBoxInsideOutline(outline);
+  ASSERT_FALSE(box.isEmpty());
+  EXPECT_NEAR(box.max().x(), table.length_m / 2, 1e-8);
+  EXPECT_NEAR(box.min().y(), -table.width_m / 2, 1e-8);
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int i = 0; i < 20000; ++i) {
+    const Vector2d p = box.min() + Vector2d(unit(random), unit(random)).cwiseProduct(box.sizes());
+    ASSERT_TRUE(insideOutline(outline, p)) << p.transpose();
+  }
+}
+
+// An outline with a notch reaching into its rail box, or a vertex inside it, gives no box.
+TEST(RailBox, AnEdgeOrVertexReachingIntoTheRailBoxEmptiesIt) {
+  const std::vector<Vector2d> square = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  EXPECT_TRUE(railBoxInsideOutline(square).isApprox(
+      Eigen::AlignedBox2d(Vector2d(-1 + 1e-9, -1 + 1e-9), Vector2d(1 - 1e-9, 1 - 1e-9))));
+  // A V-shaped notch from the bottom rail up to (0, -0.5).
+  const std::vector<Vector2d> notched = {{-1, -1}, {-0.2, -1}, {0, -0.5}, {0.2, -1},
+                                         {1, -1},  {1, 1},     {-1, 1}};
+  EXPECT_TRUE(railBoxInsideOutline(notched).isEmpty());
+  // A slanted edge cutting a corner off.
+  const std::vector<Vector2d> cut = {{-1, -1}, {0.5, -1}, {1, -0.5}, {1, 1}, {-1, 1}};
+  EXPECT_TRUE(railBoxInsideOutline(cut).isEmpty());
 }
 
 // The cushion outline holds the table's centre and every place a ball rests on the playing
