@@ -198,18 +198,32 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   if (scene.has("physics")) result.overrides = readPhysicsOverrides(scene.object("physics"));
   validateScenePhysics(simulationParamsFor(result), cueStrikeParamsFor(result), source);
 
-  // Where the balls stand: on the table, apart.
+  // Where the balls stand: on the table, apart. Between the rails anywhere R clear of them; beyond
+  // a rail's line only in a pocket's opening (a ball hanging in the jaws), inside the cushion
+  // outline and short of the capture circle, where the event loop's own check (simulate) keeps it
+  // clear of the facings and jaw roundings.
   const double R = result.ball_set.radius_m;
   const double x_limit = result.table.length_m / 2 - R, y_limit = result.table.width_m / 2 - R;
+  const TableGeometry geometry = geometryOf(result.table);
+  const auto inOpening = [&](const Eigen::Vector2d& p) {
+    if (!insideOutline(geometry.outline, p)) return false;
+    for (const Circle& capture : geometry.pockets) {
+      if ((p - capture.centre_m).norm() <= capture.radius_m) return false;
+    }
+    return true;
+  };
   for (std::size_t i = 0; i < result.balls.size(); ++i) {
     const PlacedBall& b = result.balls[i];
-    if (std::abs(b.position_m.x()) > x_limit + kPlacementSlack_m ||
-        std::abs(b.position_m.y()) > y_limit + kPlacementSlack_m) {
+    const bool between_rails = std::abs(b.position_m.x()) <= x_limit + kPlacementSlack_m &&
+                               std::abs(b.position_m.y()) <= y_limit + kPlacementSlack_m;
+    if (!between_rails && !inOpening(b.position_m)) {
       throw std::invalid_argument(source + ": ball '" + b.id + "' at [" +
                                   physics::valueText(b.position_m.x()) + ", " +
                                   physics::valueText(b.position_m.y()) +
                                   "] is off the table: |x| <= " + physics::valueText(x_limit) +
-                                  " and |y| <= " + physics::valueText(y_limit) + " m are allowed");
+                                  " and |y| <= " + physics::valueText(y_limit) +
+                                  " m are allowed, or a place in a pocket's opening short of its "
+                                  "capture circle");
     }
     for (std::size_t j = 0; j < i; ++j) {
       const double distance = (b.position_m - result.balls[j].position_m).norm();

@@ -117,6 +117,26 @@ TEST(Scene, BallsByIdPlaceOrMoveBalls) {
   EXPECT_EQ(scene.balls.size(), 10u);
 }
 
+// A ball may hang in a pocket's opening (beyond the rail's line, short of the capture circle): on
+// the 9 ft table the side pocket's circle starts 10 mm behind the mouth. A slow cue ball knocks it
+// in; a ball placed inside the circle or behind a rail is refused.
+TEST(Scene, ABallMayHangInAPocketsOpening) {
+  nlohmann::json doc = nlohmann::json::parse(R"({"table": "pool-9ft", "ball_set": "pool",
+    "balls": {"cue": [0.0, 0.3], "1": [0.0, 0.62]}, "shot": {"aim_at": "1", "speed_mps": 0.5}})");
+  const Scene scene = sceneFromJson(doc, "test.json");
+  ASSERT_GT(0.62, scene.table.width_m / 2 - scene.ball_set.radius_m);  // beyond the rail's line
+  const SceneRun run = runScene(scene);
+  bool pocketed = false;
+  for (const Event& e : run.result.events) {
+    pocketed = pocketed || (e.kind == EventKind::Pocket && run.ball_ids.at(e.ball) == "1");
+  }
+  EXPECT_TRUE(pocketed);
+  doc["balls"]["1"] = {0.0, 0.64};  // inside the capture circle
+  EXPECT_THAT(sceneError(doc), HasSubstr("test.json: ball '1' at [0, 0.64] is off the table"));
+  doc["balls"]["1"] = {0.0, 0.7};  // behind the pocket
+  EXPECT_THAT(sceneError(doc), HasSubstr("pocket's opening short of its capture circle"));
+}
+
 // Every bad scene is refused naming the file, the key path and the value as written, and saying
 // what is allowed.
 TEST(Scene, BadScenesAreRejectedNamingTheKeyAndValue) {
