@@ -277,6 +277,8 @@ double roundedLimit(double value, bool up) {
   return units / scale;
 }
 
+double cross(const Vector2d& p, const Vector2d& q) { return p.x() * q.y() - p.y() * q.x(); }
+
 std::string pointText(const Vector2d& p) {
   return "[" + physics::valueText(p.x()) + ", " + physics::valueText(p.y()) + "]";
 }
@@ -295,28 +297,50 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
   for (std::size_t k = 0; k < table.pockets.size(); ++k) {
     const CushionSegment& entry = table.cushions[3 * k];
     const CushionSegment& exit = table.cushions[3 * k + 1];
-    // The closing line p(t) = a + t (b - a), t in [0, 1]. A facing's distance along its inward
-    // normal is linear in t; where it is at least R is a half-line of t.
+    // The pocket's entrance: what a ball centre must cross to leave the table there. Past a
+    // facing's deep end nothing holds the ball; the line through the deep end along the facing's
+    // inward normal bounds where the facing holds it, and a centre crosses that line at least R
+    // in front of the facing.
+    //  - Facings that converge towards the back (every side pocket; corner pockets with facing
+    //    angles above 135 deg): those lines from a and b meet at `meet` in front of the line
+    //    closing the opening, and every point of the triangle a, b, meet is past both deep ends,
+    //    the closing line included. A centre gets in only through the gates [a + R n_entry, meet]
+    //    and [b + R n_exit, meet].
+    //  - Facings parallel or diverging: the lines meet behind the closing line or not at all, and
+    //    the centre reaches the closing line within both facings' reach: on its part R clear of
+    //    both facings' lines.
+    // The circle is convex: the gates lie inside it if their ends do.
     const Vector2d a = entry.end_m, b = exit.start_m;
-    double lo = 0, hi = 1;
-    for (const CushionSegment* facing : {&entry, &exit}) {
-      const double at_a = facing->inward_normal.dot(a - facing->start_m);
-      const double slope = facing->inward_normal.dot(b - a);
-      if (slope > 0) {
-        lo = std::max(lo, (R - at_a) / slope);
-      } else if (slope < 0) {
-        hi = std::min(hi, (R - at_a) / slope);
-      } else if (!(at_a >= R)) {
-        hi = -1;
-      }
-    }
-    if (!(lo <= hi)) continue;  // no ball fits between the facings there: none reaches the line
     const Pocket& pocket = table.pockets[k];
-    const Vector2d ends[2] = {a + lo * (b - a), a + hi * (b - a)};
+    const double across = cross(entry.inward_normal, exit.inward_normal);
+    const double s_meet = across == 0 ? -1 : cross(b - a, exit.inward_normal) / across;
+    const Vector2d meet = a + s_meet * entry.inward_normal;
+    std::vector<Vector2d> gates;
+    if (s_meet > 0 && (meet - a).dot(pocket.axis) < 0) {
+      if (!(s_meet > R)) continue;  // the lines meet within R of the deep ends: no way in
+      gates = {a + R * entry.inward_normal, b + R * exit.inward_normal, meet};
+    } else {
+      // The closing line p(t) = a + t (b - a), t in [0, 1]. A facing's distance along its inward
+      // normal is linear in t; where it is at least R is a half-line of t.
+      double lo = 0, hi = 1;
+      for (const CushionSegment* facing : {&entry, &exit}) {
+        const double at_a = facing->inward_normal.dot(a - facing->start_m);
+        const double slope = facing->inward_normal.dot(b - a);
+        if (slope > 0) {
+          lo = std::max(lo, (R - at_a) / slope);
+        } else if (slope < 0) {
+          hi = std::min(hi, (R - at_a) / slope);
+        } else if (!(at_a >= R)) {
+          hi = -1;
+        }
+      }
+      if (!(lo <= hi)) continue;  // no ball fits between the facings there: none reaches the line
+      gates = {a + lo * (b - a), a + hi * (b - a)};
+    }
     std::size_t worst = 0;
-    double needed_m = 0;  // the smallest capture radius at this offset: the farther end's distance
-    for (std::size_t e = 0; e < 2; ++e) {
-      const double distance = (ends[e] - pocket.capture.centre_m).norm();
+    double needed_m = 0;  // the smallest capture radius at this offset: the farthest gate's distance
+    for (std::size_t e = 0; e < gates.size(); ++e) {
+      const double distance = (gates[e] - pocket.capture.centre_m).norm();
       if (distance > needed_m) {
         needed_m = distance;
         worst = e;
@@ -328,8 +352,8 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
     // ends, an interval around each end's depth behind the mouth (offsets are >= 0).
     const double r = pocket.capture.radius_m;
     double offset_lo = -1, offset_hi = std::numeric_limits<double>::infinity();
-    for (const Vector2d& end : ends) {
-      const Vector2d from_mouth = end - pocket.mouth_centre_m;
+    for (const Vector2d& gate : gates) {
+      const Vector2d from_mouth = gate - pocket.mouth_centre_m;
       const double depth = from_mouth.dot(pocket.axis);
       const double half_width_sq = r * r - (from_mouth.squaredNorm() - depth * depth);
       if (!(half_width_sq > 0)) {
@@ -357,8 +381,8 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
         " m, a ball can run between the facings of pocket " + std::to_string(k) + " (" +
         kPocketPlaces[k] +
         ") and leave the table without entering the capture circle: the circle must cover the "
-        "part of the line between the facings' deep ends that a ball centre reaches, but " +
-        pointText(ends[worst]) + " m is " + physics::valueText(needed_m) +
+        "pocket's entrance (where a ball centre gets past the facings' deep ends), but " +
+        pointText(gates[worst]) + " m is " + physics::valueText(needed_m) +
         " m from its centre; ";
     if (offset_would_do) {
       allowed += "capture_offset_m must lie in [" + physics::valueText(lowest_offset) + ", " +

@@ -326,6 +326,37 @@ TEST(Scene, ATableWhosePocketsLetBallsThroughIsRefused) {
   }
 }
 
+// A deep capture circle that covers the closing line's middle but not the gates past the facings'
+// deep ends: a ball steered past the end of a facing used to leave the table (found by review).
+// Refused at load; at the radius the message asks for, the same shot stays on the table.
+TEST(Scene, ACaptureCircleMissingTheFacingsDeepEndsIsRefusedAndItsFixHolds) {
+  const std::string folder = ::testing::TempDir();
+  nlohmann::json table =
+      nlohmann::json::parse(std::ifstream(assetsDirectory() + "/tables/pool-9ft.json"));
+  table["corner_pocket"]["capture_offset_m"] = 0.08;
+  table["corner_pocket"]["capture_radius_m"] = 0.03;
+  nlohmann::json doc = nlohmann::json::parse(R"({"table": "scene_test_deep_capture.json",
+    "ball_set": "pool", "balls": {"cue": [1.109513918667581, -0.2759743504212746]},
+    "shot": {"heading_deg": -69, "speed_mps": 1.5}})");
+  const auto load = [&]() -> std::string {
+    std::ofstream(folder + "scene_test_deep_capture.json") << table.dump(2);
+    try {
+      const Scene scene = sceneFromJson(doc, folder + "scene.json");
+      const SceneRun run = runScene(scene);
+      return "ran, cue ball pocketed: " +
+             std::string(run.result.final_balls.at(0).pocketed ? "yes" : "no");
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+  };
+  const std::string message = load();
+  EXPECT_THAT(message, HasSubstr("corner_pocket.capture_offset_m = 0.08 is not allowed"));
+  const double radius = std::stod(message.substr(message.find("capture_radius_m must be at least ") +
+                                                 std::strlen("capture_radius_m must be at least ")));
+  table["corner_pocket"]["capture_radius_m"] = radius;
+  EXPECT_THAT(load(), HasSubstr("ran, cue ball pocketed: yes"));  // no BallLeftTableError
+}
+
 // The event loop's refusals of a scene's balls name the scene file and the balls by id (here the
 // cue ball is ball 1 of the event loop: balls given by id are placed in the order of their ids).
 TEST(Scene, EventLoopRefusalsNameTheSceneAndTheBallById) {
