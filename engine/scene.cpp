@@ -20,6 +20,9 @@ constexpr double kVerticalCue_deg = 90;
 // turn, but beyond this one ulp of the heading exceeds 1e-10 deg and the aim stops being exact (and
 // near 1e306 deg the conversion to radians overflows).
 constexpr double kMaxHeading_deg = 1e6;
+// A steepest cue elevation suggested in a message is rounded down to 1e-4 deg: readable, and still
+// allowed when used as written.
+constexpr double kSuggestedElevationScale = 1e4;
 
 // A built-in name, or a file path (relative to the scene's folder) when it ends in ".json".
 std::string resolvePath(const std::string& scene_source, const std::string& name) {
@@ -77,8 +80,12 @@ void readCueShot(const JsonReader& shot, physics::CueShot* cue) {
                             " (units of R), or the tip miscues");
   }
   if (!physics::cueMeetsTipPointFirst(*cue)) {
+    // Rounded down to 1 / kSuggestedElevationScale deg, so that the value suggested, used as written,
+    // is allowed.
     const double steepest_deg =
-        physics::steepestCueElevationRad(cue->side_offset, cue->height_offset) * 180 / M_PI;
+        std::floor(physics::steepestCueElevationRad(cue->side_offset, cue->height_offset) * 180 /
+                   M_PI * kSuggestedElevationScale) /
+        kSuggestedElevationScale;
     shot.reject("elevation_deg", "with " + shot.keyAndValue("height") +
                                      (shot.has("side") ? " and " + shot.keyAndValue("side") : "") +
                                      " it must be below " + physics::valueText(steepest_deg) +

@@ -236,12 +236,6 @@ void setSampleShot(const SuiteCase& suite_case, const ExecutionNoise& noise, std
 
 }  // namespace
 
-const std::vector<std::string>& pocketNames() {
-  static const std::vector<std::string> names = {"bottom-left", "bottom-middle", "bottom-right",
-                                                 "top-right",   "top-middle",    "top-left"};
-  return names;
-}
-
 const char* expectationKey(Expectation::Kind kind) {
   switch (kind) {
     case Expectation::Kind::Pocketed:

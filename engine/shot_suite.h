@@ -16,10 +16,6 @@
 
 namespace baize::engine {
 
-// The pockets' names in Table::pockets order, seen with +x to the right and +y up: "bottom-left",
-// "bottom-middle", "bottom-right", "top-right", "top-middle", "top-left".
-const std::vector<std::string>& pocketNames();
-
 // Where the cue ball should stop.
 struct CueBallRegion {
   enum class Kind { Circle, Rectangle, StraightShot };

@@ -21,9 +21,6 @@ constexpr double kRadiansPerDegree = kPi / 180.0;
 constexpr int kSuggestedLimitDigits = 6;
 
 // Where each pocket sits, in Table::pockets order (docs/tables.md).
-const char* const kPocketPlaces[] = {"corner at -x, -y", "side at -y",        "corner at +x, -y",
-                                     "corner at +x, +y", "side at +y",        "corner at -x, +y"};
-
 Vector2d leftNormal(const Vector2d& direction) { return Vector2d(-direction.y(), direction.x()); }
 Vector2d rightNormal(const Vector2d& direction) { return Vector2d(direction.y(), -direction.x()); }
 
@@ -379,7 +376,7 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
     std::string allowed =
         "with " + other + " and balls of radius " + physics::valueText(R) +
         " m, a ball can run between the facings of pocket " + std::to_string(k) + " (" +
-        kPocketPlaces[k] +
+        pocketNames().at(k) +
         ") and leave the table without entering the capture circle: the circle must cover the "
         "pocket's entrance (where a ball centre gets past the facings' deep ends), but " +
         pointText(gates[worst]) + " m is " + physics::valueText(needed_m) +
@@ -425,6 +422,12 @@ bool insideOutline(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vec
 // it and points in it lie strictly inside the outline: far below any ball's size, far above the
 // rounding of table coordinates (~1e-16 m).
 constexpr double kRailBoxInset_m = 1e-9;
+
+const std::vector<std::string>& pocketNames() {
+  static const std::vector<std::string> names = {"bottom-left", "bottom-middle", "bottom-right",
+                                                 "top-right",   "top-middle",    "top-left"};
+  return names;
+}
 
 Eigen::AlignedBox2d railBoxInsideOutline(const std::vector<Vector2d>& outline) {
   Eigen::AlignedBox2d box;

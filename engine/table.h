@@ -138,6 +138,10 @@ bool insideOutline(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vec
 // may cross it and its corners must be inside).
 Eigen::AlignedBox2d railBoxInsideOutline(const std::vector<Eigen::Vector2d>& outline);
 
+// The pockets' names in Table::pockets order, seen with +x to the right and +y up: "bottom-left",
+// "bottom-middle", "bottom-right", "top-right", "top-middle", "top-left".
+const std::vector<std::string>& pocketNames();
+
 // The shipped tables: "pool-7ft", "pool-8ft", "pool-9ft", "snooker-12ft".
 std::vector<std::string> builtinTableNames();
 Table builtinTable(const std::string& name);

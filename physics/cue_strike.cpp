@@ -78,12 +78,18 @@ void validateCueShot(const CueShot& s) {
   }
 }
 
-bool cueMeetsTipPointFirst(const CueShot& shot) {
+namespace {
+
+// -Q . d / R = c cos(theta) + b sin(theta): positive when the tip meets Q first along the cue line.
+double tipFacing(const CueShot& shot) {
   const double a = shot.side_offset, b = shot.height_offset;
   const double c = std::sqrt(1 - a * a - b * b);
-  const double facing = c * std::cos(shot.elevation_rad) + b * std::sin(shot.elevation_rad);
-  return facing > 0;
+  return c * std::cos(shot.elevation_rad) + b * std::sin(shot.elevation_rad);
 }
+
+}  // namespace
+
+bool cueMeetsTipPointFirst(const CueShot& shot) { return tipFacing(shot) > 0; }
 
 double steepestCueElevationRad(double side_offset, double height_offset) {
   const double a = side_offset, b = height_offset;
@@ -105,7 +111,7 @@ CueStrikeResult strikeCueBall(const CueStrikeParams& params, const CueShot& shot
   const Eigen::Vector3d Q = R * (a * right + b * z - c * aim);
 
   // The tip must meet Q first along the cue line: Q . d = -R (c cos th + b sin th) < 0.
-  const double facing = c * cos_th + b * sin_th;
+  const double facing = tipFacing(shot);
   if (!(facing > 0)) {
     rejectValue("cue elevation theta (rad)", shot.elevation_rad,
                 "with b = " + valueText(b) + " the cue line meets the ball behind the tip point " +

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "engine/json_reader.h"
-#include "engine/shot_suite.h"
 #include "engine/table.h"
 
 namespace baize::engine {

@@ -78,10 +78,12 @@ struct Checker {
     if (c.jaw >= 0) {
       const JawArc& arc = table.jaws[c.jaw];
       const Eigen::Vector2d d = p - arc.centre_m;
-      // The direction of the centre from the arc's centre, counterclockwise from the arc's start.
-      const double turn = std::remainder(std::atan2(d.y(), d.x()) - arc.start_angle_rad, 2 * M_PI);
+      // The direction of the centre from the arc's centre, counterclockwise from the arc's start,
+      // in [0, 2 pi).
+      double turn = std::atan2(d.y(), d.x()) - arc.start_angle_rad;
+      turn -= 2 * M_PI * std::floor(turn / (2 * M_PI));
       const double span = arc.end_angle_rad - arc.start_angle_rad;
-      if (turn < 0 || turn > span) return kInf;
+      if (turn > span) return kInf;
       return d.norm() - (arc.radius_m + R);
     }
     const CushionSegment& s = table.cushions[c.cushion];
@@ -287,14 +289,17 @@ class SceneMaker {
   double uniform(double lo, double hi) { return lo + (hi - lo) * ((engine_() >> 11) * 0x1.0p-53); }
   int index(int count) { return static_cast<int>(engine_() % static_cast<std::uint64_t>(count)); }
 
-  // A ball at rest somewhere clear of the others and of the cushions (by `margin_m`).
-  bool placeClear(std::vector<BallState>* balls, double R, double margin_m) {
+  // A ball at rest somewhere clear of the others and of the cushions (by `margin_m`), and outside
+  // the capture circles `pockets` (it would start pocketed).
+  bool placeClear(std::vector<BallState>* balls, double R, double margin_m,
+                  const std::vector<Circle>& pockets = {}) {
     for (int attempt = 0; attempt < 1000; ++attempt) {
       BallState b;
       b.position = {uniform(-kTableLength_m / 2 + R + margin_m, kTableLength_m / 2 - R - margin_m),
                     uniform(-kTableWidth_m / 2 + R + margin_m, kTableWidth_m / 2 - R - margin_m)};
       bool clear = true;
       for (const BallState& o : *balls) clear = clear && (o.position - b.position).norm() > 2 * R + margin_m;
+      for (const Circle& c : pockets) clear = clear && (c.centre_m - b.position).norm() > c.radius_m + margin_m;
       if (clear) {
         balls->push_back(b);
         return true;
@@ -343,7 +348,7 @@ TEST(ShotSimulatorBruteForce, ShotsAtThePocketsMissNoJawOrPocket) {
   for (int scene = 0; scene < 150; ++scene) {
     std::vector<BallState> balls;
     const int n = 2 + scene % 3;
-    for (int i = 0; i < n; ++i) ASSERT_TRUE(maker.placeClear(&balls, R, 1e-3));
+    for (int i = 0; i < n; ++i) ASSERT_TRUE(maker.placeClear(&balls, R, 1e-3, checker.table.pockets));
     const Pocket& pocket = pool.pockets[maker.index(static_cast<int>(pool.pockets.size()))];
     const Eigen::Vector2d across(-pocket.axis.y(), pocket.axis.x());
     const double half_mouth = 0.5 * (pocket.jaw_tips_m[1] - pocket.jaw_tips_m[0]).norm();

@@ -622,7 +622,7 @@ TEST_F(CaptureCircleTest, ACaptureCircleFarBehindTheMouthIsRefusedNamingKeyValue
   document["corner_pocket"]["capture_offset_m"] = 0.5;
   const std::string message = refusal();
   EXPECT_MENTIONS(message, path + ": corner_pocket.capture_offset_m = 0.5 is not allowed");
-  EXPECT_MENTIONS(message, "pocket 0 (corner at -x, -y)");
+  EXPECT_MENTIONS(message, "pocket 0 (bottom-left)");
   EXPECT_MENTIONS(message, "capture_radius_m = 0.04 and balls of radius 0.028575 m");
   EXPECT_MENTIONS(message, "leave the table");
   // The limits it suggests work as written: either end of the offsets, or the radius.
@@ -665,7 +665,7 @@ TEST_F(CaptureCircleTest, ASidePocketIsNamedByItsOwnKey) {
   document["side_pocket"]["capture_offset_m"] = 0;
   const std::string message = refusal();
   EXPECT_MENTIONS(message, "side_pocket.capture_offset_m = 0 is not allowed");
-  EXPECT_MENTIONS(message, "pocket 1 (side at -y)");
+  EXPECT_MENTIONS(message, "pocket 1 (bottom-middle)");
 }
 
 // The boundary, found independently by sampling: a circle just reaching past the farthest point a

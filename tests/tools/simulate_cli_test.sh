@@ -55,23 +55,34 @@ PY
 grep -q "^models: cushion exact, ball-ball frictional$" <<<"$out" || fail "models line: $out"
 
 # --sample BALL@TIME: the state at that time, as the trajectory's closed form gives it. At 0 the
-# cue ball is where the scene put it, moving as struck; after the end every ball is at rest where
-# it stopped; the JSON carries the same samples.
+# cue ball is where the scene put it, moving as struck (the printed line agrees with the JSON);
+# after the end every ball is at rest where it stopped, or in its pocket; the JSON carries the
+# same samples.
 out=$("$baize" simulate "$root/assets/scenes/9-ball-break.json" --sample cue@0 --sample 9@1000 \
-  --sample cue@0.05 --json "$work/sampled.json") || fail "--sample exited $?"
-grep -q "^sample cue@0: position \[-0.6350, 0.0000\] m, velocity \[7.8369, 0.0000, 0.0000\] m/s" \
-  <<<"$out" || fail "sample at the strike: $out"
-python3 - "$work/sampled.json" <<'PY'
+  --sample cue@0.05 --sample 6@1000 --json "$work/sampled.json") || fail "--sample exited $?"
+python3 - "$work/sampled.json" "$out" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 s = d["samples"]
-assert [(x["ball"], x["time_s"]) for x in s] == [("cue", 0), ("9", 1000), ("cue", 0.05)], s
+assert [(x["ball"], x["time_s"]) for x in s] == [("cue", 0), ("9", 1000), ("cue", 0.05), ("6", 1000)], s
 final = {b["id"]: b for b in d["final"]}
-assert s[1]["position_m"] == final["9"]["position_m"] and s[1]["velocity_mps"] == [0, 0, 0], s[1]
+line = [l for l in sys.argv[2].splitlines() if l.startswith("sample cue@0:")][0]
+expected = "sample cue@0: position [%.4f, %.4f] m, velocity [%.4f, %.4f, %.4f] m/s" % (
+    *s[0]["position_m"], *s[0]["velocity_mps"])
+assert line.startswith(expected), (line, expected)
+assert s[0]["position_m"] == d["trajectories"]["cue"][0]["position_m"], s[0]
 assert s[0]["velocity_mps"] == d["trajectories"]["cue"][0]["velocity_mps"], s[0]
+assert not final["9"]["pocketed"] and not s[1]["pocketed"], (final["9"], s[1])
+assert s[1]["position_m"] == final["9"]["position_m"] and s[1]["velocity_mps"] == [0, 0, 0], s[1]
+# The 6 falls in the break: its sample says where and since when, as its pocket event does.
+fall = [e for e in d["events"] if e["type"] == "pocket" and e["ball"] == "6"][0]
+assert s[3]["pocketed"] and s[3]["pocket_name"] == final["6"]["pocket_name"], s[3]
+assert s[3]["fell_at_s"] == fall["time_s"] and "velocity_mps" not in s[3], s[3]
+assert "sample 6@1000: in the %s pocket since" % final["6"]["pocket_name"] in sys.argv[2]
 # Before the first collision the cue ball (struck below centre: it slides, its slip along +x)
-# slows at mu_s g: v = v0 - mu_s g t, x = x0 + v0 t - mu_s g t^2 / 2 (mu_s = 0.2, g = 9.81).
-v0, t, a = s[0]["velocity_mps"][0], 0.05, 0.2 * 9.81
+# slows at mu_s g: v = v0 - mu_s g t, x = x0 + v0 t - mu_s g t^2 / 2, with the run's mu_s and
+# g = 9.81 m/s^2 (physics::ClothParams).
+v0, t, a = s[0]["velocity_mps"][0], 0.05, d["physics"]["cloth"]["sliding_friction"] * 9.81
 assert abs(s[2]["velocity_mps"][0] - (v0 - a * t)) < 1e-9, s[2]
 assert abs(s[2]["position_m"][0] - (s[0]["position_m"][0] + v0 * t - a * t * t / 2)) < 1e-9, s[2]
 PY

@@ -12,7 +12,7 @@
 
 #include "engine/scene.h"
 #include "engine/shot_outcome.h"
-#include "engine/shot_suite.h"
+#include "engine/table.h"
 #include "render/shot_record.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
@@ -104,7 +104,7 @@ void runSimulate(const SimulateFlags& flags) {
             << ", ball-ball " << physics["ball_ball"]["model"].get<std::string>()
             << (physics["cue"].contains("squirt_end_mass_kg") ? ", squirt\n" : "\n");
   std::cout << "first ball hit: " << outcome.first_hit.value_or("none");
-  if (outcome.cushions_before_first_hit > 0) {
+  if (outcome.first_hit && outcome.cushions_before_first_hit > 0) {
     std::cout << " (after " << outcome.cushions_before_first_hit << " cushion or jaw contacts)";
   }
   std::cout << "\npocketed:";
@@ -127,14 +127,29 @@ void runSimulate(const SimulateFlags& flags) {
             << " skipped\n";
   nlohmann::json sampled = nlohmann::json::array();
   for (const SampleRequest& request : samples) {
-    const physics::BallState s = engine::sampleTrajectory(
-        engine::simulationParamsFor(scene).cloth, r.trajectories.at(request.ball), request.time_s);
-    std::cout << "sample " << request.text << ": position [" << s.position.x() << ", "
-              << s.position.y() << "] m, velocity " << vectorText(s.velocity)
-              << " m/s, angular velocity " << vectorText(s.angular_velocity) << " rad/s\n";
-    nlohmann::json entry = stateJson(s);
-    entry["ball"] = id(request.ball);
-    entry["time_s"] = request.time_s;
+    const engine::Trajectory& path = r.trajectories.at(request.ball);
+    const physics::BallState s =
+        engine::sampleTrajectory(engine::simulationParamsFor(scene).cloth, path, request.time_s);
+    nlohmann::json entry = {{"ball", id(request.ball)}, {"time_s", request.time_s}};
+    // A pocketed ball is in its pocket from the piece that says so on; its state is where it fell.
+    const engine::TrajectoryPiece* fell = nullptr;
+    for (const engine::TrajectoryPiece& piece : path) {
+      if (piece.pocketed && piece.start_time_s <= request.time_s) fell = &piece;
+    }
+    std::cout << "sample " << request.text << ": ";
+    if (fell) {
+      const std::string& pocket = pocket_names.at(r.final_balls.at(request.ball).pocket);
+      std::cout << "in the " << pocket << " pocket since " << fell->start_time_s << " s\n";
+      entry["pocketed"] = true;
+      entry["pocket_name"] = pocket;
+      entry["fell_at_s"] = fell->start_time_s;
+    } else {
+      std::cout << "position [" << s.position.x() << ", " << s.position.y() << "] m, velocity "
+                << vectorText(s.velocity) << " m/s, angular velocity "
+                << vectorText(s.angular_velocity) << " rad/s\n";
+      entry.update(stateJson(s));
+      entry["pocketed"] = false;
+    }
     sampled.push_back(entry);
   }
   std::cout << "wall time: " << std::setprecision(3) << wall_ms << " ms\n";
