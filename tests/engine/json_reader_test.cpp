@@ -77,7 +77,8 @@ TEST(JsonReader, ParsingRefusesAKeyGivenTwiceInOneObject) {
       {R"({"cases": [[0, {"y": 1, "y": 1}]]})", "doc: cases[0][1].y appears twice"},
       {R"([{"k": 1}, {"k": 1, "k": 1}])", "doc: [1].k appears twice"},
   };
-  for (const auto& [text, expected] : cases) {
+  for (const auto& [document, expected] : cases) {
+    const std::string& text = document;  // a lambda may not capture a structured binding (C++17)
     EXPECT_MENTIONS(invalidArgumentMessage([&] { JsonReader::parseText(text, "doc"); }), expected);
   }
   const std::string distinct = R"({"a": {"k": 1}, "b": {"k": 2}, "k": [{"k": 3}, {"k": 4}]})";
