@@ -212,8 +212,21 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   const double R = result.ball_set.radius_m;
   const double x_limit = result.table.length_m / 2 - R, y_limit = result.table.width_m / 2 - R;
   const TableGeometry geometry = geometryOf(result.table);
+  // Past both facings' deep ends of a pocket nothing holds a ball, and the capture check
+  // (checkCapturesCoverOpenings) says nothing of a ball that starts there.
+  const auto pastBothDeepEnds = [&](const Eigen::Vector2d& p) {
+    for (std::size_t k = 0; k < result.table.pockets.size(); ++k) {
+      const CushionSegment& entry = result.table.cushions[3 * k];
+      const CushionSegment& exit = result.table.cushions[3 * k + 1];
+      if ((p - entry.end_m).dot(entry.end_m - entry.start_m) > 0 &&
+          (p - exit.start_m).dot(exit.start_m - exit.end_m) > 0) {
+        return true;
+      }
+    }
+    return false;
+  };
   const auto inOpening = [&](const Eigen::Vector2d& p) {
-    if (!insideOutline(geometry.outline, p)) return false;
+    if (!insideOutline(geometry.outline, p) || pastBothDeepEnds(p)) return false;
     for (const Circle& capture : geometry.pockets) {
       if ((p - capture.centre_m).norm() <= capture.radius_m) return false;
     }
@@ -230,7 +243,7 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
                                   "] is off the table: |x| <= " + physics::valueText(x_limit) +
                                   " and |y| <= " + physics::valueText(y_limit) +
                                   " m are allowed, or a place in a pocket's opening short of its "
-                                  "capture circle");
+                                  "capture circle and of the facings' deep ends");
     }
     for (std::size_t j = 0; j < i; ++j) {
       const double distance = (b.position_m - result.balls[j].position_m).norm();

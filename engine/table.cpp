@@ -1,10 +1,12 @@
 #include "engine/table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <stdexcept>
+#include <utility>
 
 #include "engine/json_reader.h"
 #include "physics/value_text.h"
@@ -280,6 +282,92 @@ std::string pointText(const Vector2d& p) {
   return "[" + physics::valueText(p.x()) + ", " + physics::valueText(p.y()) + "]";
 }
 
+// Facings whose inward normals' cross product is below this are parallel: at a corner pocket's
+// 135 deg the computed normals differ by rounding (about 1e-15), and the lines through the deep
+// ends would "meet" anywhere.
+constexpr double kParallelFacings = 1e-9;
+
+// A point this close to a facing's end (m, along it) counts as beside the facing: with parallel
+// facings the closing line runs exactly through both deep ends' perpendiculars, and rounding
+// (about 1e-16 m) must not put its points past them.
+constexpr double kBesideSlack_m = 1e-9;
+
+// The interval of t where f0 + f1 t lies in [lo, hi] (empty: first > second).
+std::pair<double, double> linearWithin(double f0, double f1, double lo, double hi) {
+  if (f1 == 0) {
+    const bool inside = f0 >= lo && f0 <= hi;
+    return inside ? std::make_pair(-std::numeric_limits<double>::infinity(),
+                                   std::numeric_limits<double>::infinity())
+                  : std::make_pair(1.0, 0.0);
+  }
+  const double t0 = (lo - f0) / f1, t1 = (hi - f0) / f1;
+  return {std::min(t0, t1), std::max(t0, t1)};
+}
+
+// A pocket's entrance: what a ball centre must cross to leave the table there, as sets of points
+// any one of which, inside the (convex) capture circle, keeps every ball in; empty when no ball
+// gets past the facings. `entry` ends at its deep end a, `exit` starts at its deep end b; a facing
+// holds a ball where the ball's centre lies beside it (between its ends) less than R in front of
+// its line; past its deep end (beyond the line through a along its inward normal) nothing holds
+// the ball.
+//  - Facings that converge towards the back (every shipped pocket): the lines through a and b
+//    along the inward normals meet at `meet` in front of the closing line [a, b], and every point
+//    of the triangle a, b, meet is past both deep ends. A centre gets in only across those lines,
+//    at least R in front of the facings: the gates [a + R n_entry, meet] and [b + R n_exit, meet].
+//    Either the gates lie inside the circle, or the part of the triangle next to the closing line,
+//    a, a + R n_entry, b + R n_exit, b, does (every way from the gates to the closing line
+//    crosses [a + R n_entry, b + R n_exit]): two covers, the smaller circle wins (the second for
+//    facings nearly along the rail, whose lines meet far out on the table).
+//  - Facings parallel or diverging: the centre reaches the closing line only where neither facing
+//    holds it; the ends of those parts of the line. (Jaw roundings are left out: they only hold
+//    more balls, so leaving them out asks for more.)
+std::vector<std::vector<Vector2d>> entranceCovers(const CushionSegment& entry,
+                                                  const CushionSegment& exit,
+                                                  const Vector2d& outward, double R) {
+  const Vector2d a = entry.end_m, b = exit.start_m;
+  const double across = cross(entry.inward_normal, exit.inward_normal);
+  if (std::abs(across) > kParallelFacings) {
+    const double s_meet = cross(b - a, exit.inward_normal) / across;  // a + s n_entry = b + t n_exit
+    const Vector2d meet = a + s_meet * entry.inward_normal;
+    if (s_meet > 0 && (meet - a).dot(outward) < 0) {
+      if (!(s_meet > R)) return {};  // the lines meet within R of the deep ends: no way in
+      const Vector2d a_gate = a + R * entry.inward_normal, b_gate = b + R * exit.inward_normal;
+      return {{a_gate, b_gate, meet}, {a, a_gate, b_gate, b}};
+    }
+  }
+  // The closing line p(t) = a + t (b - a), t in [0, 1]; where each facing holds the centre is an
+  // interval of t (beside it and less than R in front: both linear in t).
+  std::vector<std::pair<double, double>> held;
+  for (const CushionSegment* facing : {&entry, &exit}) {
+    const Vector2d along = facing->end_m - facing->start_m;
+    const double slack = kBesideSlack_m * along.norm();
+    const auto beside = linearWithin(along.dot(a - facing->start_m), along.dot(b - a), -slack,
+                                     along.squaredNorm() + slack);
+    const auto near = linearWithin(facing->inward_normal.dot(a - facing->start_m),
+                                   facing->inward_normal.dot(b - a),
+                                   -std::numeric_limits<double>::infinity(), R);
+    held.push_back({std::max(beside.first, near.first), std::min(beside.second, near.second)});
+  }
+  std::sort(held.begin(), held.end());
+  std::vector<Vector2d> ends;  // of the parts of [0, 1] neither interval covers
+  double from = 0;
+  for (const auto& [lo, hi] : held) {
+    if (!(lo <= hi)) continue;  // empty
+    if (lo > from) {
+      ends.push_back(a + from * (b - a));
+      ends.push_back(a + std::min(lo, 1.0) * (b - a));
+    }
+    from = std::max(from, hi);
+    if (from >= 1) break;
+  }
+  if (from < 1) {
+    ends.push_back(a + from * (b - a));
+    ends.push_back(b);
+  }
+  if (ends.empty()) return {};
+  return {ends};
+}
+
 }  // namespace
 
 void checkCapturesCoverOpenings(const Table& table, double R) {
@@ -292,73 +380,46 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
                                 "engine/table.h lists them");
   }
   for (std::size_t k = 0; k < table.pockets.size(); ++k) {
-    const CushionSegment& entry = table.cushions[3 * k];
-    const CushionSegment& exit = table.cushions[3 * k + 1];
-    // The pocket's entrance: what a ball centre must cross to leave the table there. Past a
-    // facing's deep end nothing holds the ball; the line through the deep end along the facing's
-    // inward normal bounds where the facing holds it, and a centre crosses that line at least R
-    // in front of the facing.
-    //  - Facings that converge towards the back (every side pocket; corner pockets with facing
-    //    angles above 135 deg): those lines from a and b meet at `meet` in front of the line
-    //    closing the opening, and every point of the triangle a, b, meet is past both deep ends,
-    //    the closing line included. A centre gets in only through the gates [a + R n_entry, meet]
-    //    and [b + R n_exit, meet].
-    //  - Facings parallel or diverging: the lines meet behind the closing line or not at all, and
-    //    the centre reaches the closing line within both facings' reach: on its part R clear of
-    //    both facings' lines.
-    // The circle is convex: the gates lie inside it if their ends do.
-    const Vector2d a = entry.end_m, b = exit.start_m;
     const Pocket& pocket = table.pockets[k];
-    const double across = cross(entry.inward_normal, exit.inward_normal);
-    const double s_meet = across == 0 ? -1 : cross(b - a, exit.inward_normal) / across;
-    const Vector2d meet = a + s_meet * entry.inward_normal;
-    std::vector<Vector2d> gates;
-    if (s_meet > 0 && (meet - a).dot(pocket.axis) < 0) {
-      if (!(s_meet > R)) continue;  // the lines meet within R of the deep ends: no way in
-      gates = {a + R * entry.inward_normal, b + R * exit.inward_normal, meet};
-    } else {
-      // The closing line p(t) = a + t (b - a), t in [0, 1]. A facing's distance along its inward
-      // normal is linear in t; where it is at least R is a half-line of t.
-      double lo = 0, hi = 1;
-      for (const CushionSegment* facing : {&entry, &exit}) {
-        const double at_a = facing->inward_normal.dot(a - facing->start_m);
-        const double slope = facing->inward_normal.dot(b - a);
-        if (slope > 0) {
-          lo = std::max(lo, (R - at_a) / slope);
-        } else if (slope < 0) {
-          hi = std::min(hi, (R - at_a) / slope);
-        } else if (!(at_a >= R)) {
-          hi = -1;
+    const std::vector<std::vector<Vector2d>> covers =
+        entranceCovers(table.cushions[3 * k], table.cushions[3 * k + 1], pocket.axis, R);
+    if (covers.empty()) continue;  // no ball gets past the facings
+    // The cover that needs the smallest circle at this offset: its farthest point's distance.
+    const std::vector<Vector2d>* gates = nullptr;
+    std::size_t worst = 0;
+    double needed_m = std::numeric_limits<double>::infinity();
+    for (const std::vector<Vector2d>& cover : covers) {
+      std::size_t farthest = 0;
+      for (std::size_t e = 1; e < cover.size(); ++e) {
+        if ((cover[e] - pocket.capture.centre_m).norm() >
+            (cover[farthest] - pocket.capture.centre_m).norm()) {
+          farthest = e;
         }
       }
-      if (!(lo <= hi)) continue;  // no ball fits between the facings there: none reaches the line
-      gates = {a + lo * (b - a), a + hi * (b - a)};
-    }
-    std::size_t worst = 0;
-    double needed_m = 0;  // the smallest capture radius at this offset: the farthest gate's distance
-    for (std::size_t e = 0; e < gates.size(); ++e) {
-      const double distance = (gates[e] - pocket.capture.centre_m).norm();
-      if (distance > needed_m) {
-        needed_m = distance;
-        worst = e;
-      }
+      const double distance = (cover[farthest] - pocket.capture.centre_m).norm();
+      if (distance < needed_m) needed_m = distance, gates = &cover, worst = farthest;
     }
     if (needed_m < pocket.capture.radius_m) continue;
 
-    // The offsets at which this radius would do: |end - mouth - offset * axis| < radius at both
-    // ends, an interval around each end's depth behind the mouth (offsets are >= 0).
+    // The offsets at which this radius would do: for a cover, |point - mouth - offset * axis| <
+    // radius at each of its points, an interval around each point's depth behind the mouth
+    // (offsets are >= 0); of the covers' intervals, the widest is suggested.
     const double r = pocket.capture.radius_m;
-    double offset_lo = -1, offset_hi = std::numeric_limits<double>::infinity();
-    for (const Vector2d& gate : gates) {
-      const Vector2d from_mouth = gate - pocket.mouth_centre_m;
-      const double depth = from_mouth.dot(pocket.axis);
-      const double half_width_sq = r * r - (from_mouth.squaredNorm() - depth * depth);
-      if (!(half_width_sq > 0)) {
-        offset_hi = -1;
-        break;
+    double offset_lo = -1, offset_hi = -2;
+    for (const std::vector<Vector2d>& cover : covers) {
+      double lo = -1, hi = std::numeric_limits<double>::infinity();
+      for (const Vector2d& point : cover) {
+        const Vector2d from_mouth = point - pocket.mouth_centre_m;
+        const double depth = from_mouth.dot(pocket.axis);
+        const double half_width_sq = r * r - (from_mouth.squaredNorm() - depth * depth);
+        if (!(half_width_sq > 0)) {
+          hi = -2;
+          break;
+        }
+        lo = std::max(lo, depth - std::sqrt(half_width_sq));
+        hi = std::min(hi, depth + std::sqrt(half_width_sq));
       }
-      offset_lo = std::max(offset_lo, depth - std::sqrt(half_width_sq));
-      offset_hi = std::min(offset_hi, depth + std::sqrt(half_width_sq));
+      if (hi - std::max(lo, 0.0) > offset_hi - std::max(offset_lo, 0.0)) offset_lo = lo, offset_hi = hi;
     }
     const double lowest_offset = offset_lo < 0 ? 0 : roundedLimit(offset_lo, true);
     const double highest_offset = roundedLimit(offset_hi, false);
@@ -379,7 +440,7 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
         pocketNames().at(k) +
         ") and leave the table without entering the capture circle: the circle must cover the "
         "pocket's entrance (where a ball centre gets past the facings' deep ends), but " +
-        pointText(gates[worst]) + " m is " + physics::valueText(needed_m) +
+        pointText((*gates)[worst]) + " m is " + physics::valueText(needed_m) +
         " m from its centre; ";
     if (offset_would_do) {
       allowed += "capture_offset_m must lie in [" + physics::valueText(lowest_offset) + ", " +

@@ -111,16 +111,14 @@ Table tableFromJson(const nlohmann::json& document, const std::string& source);
 Table loadTable(const std::string& path);
 
 // Checks that the table's pockets swallow every ball of radius `ball_radius_m` that passes their
-// facings. Past a facing's deep end nothing holds a ball; a centre gets there across the line
-// through that end along the facing's inward normal, at least R in front of the facing. Where the
-// facings converge those lines meet in front of the line closing the opening, and the two gates
-// (from each deep end moved R inwards to where the lines meet) must lie strictly inside the
-// capture circle; where they do not, the part of the closing line R clear of both facings' lines
-// must. Otherwise a ball could run past the facings without falling and leave the table. (The
-// circle is convex: checking the gates' ends suffices.) A table file cannot know the radius, so
-// scenes check this where the table meets the ball set. Throws std::invalid_argument naming the
-// table's source, the pocket, the key (corner_pocket.capture_offset_m or ...capture_radius_m) and
-// its value, and the offsets or the smallest radius that would cover the entrance.
+// facings: the entrance through which a ball centre gets past them (the gates past converging
+// facings' deep ends, or the part of the triangle they bound next to the closing line; for
+// facings that do not converge, the parts of the closing line neither facing holds; docs/tables.md)
+// must lie strictly inside the capture circle, or a ball could run past the facings without
+// falling and leave the table. A table file cannot know the radius, so scenes check this where the
+// table meets the ball set. Throws std::invalid_argument naming the table's source, the pocket,
+// the key (corner_pocket.capture_offset_m or ...capture_radius_m) and its value, and the offsets
+// or the smallest radius that would cover the entrance.
 void checkCapturesCoverOpenings(const Table& table, double ball_radius_m);
 
 // The cushion outline: the ends of the straight cushion noses in turn, for noses listed in outline

@@ -135,6 +135,13 @@ TEST(Scene, ABallMayHangInAPocketsOpening) {
   EXPECT_THAT(sceneError(doc), HasSubstr("test.json: ball '1' at [0, 0.64] is off the table"));
   doc["balls"]["1"] = {0.0, 0.7};  // behind the pocket
   EXPECT_THAT(sceneError(doc), HasSubstr("pocket's opening short of its capture circle"));
+  // Just past a facing's deep end, where nothing holds a ball (found by review: every stroke then
+  // left the table).
+  const CushionSegment& facing = scene.table.cushions[3 * 4];  // top-middle's entry facing
+  const Eigen::Vector2d past = facing.end_m + 1e-3 * (facing.end_m - facing.start_m).normalized() +
+                               0.3 * scene.ball_set.radius_m * facing.inward_normal;
+  doc["balls"]["1"] = {past.x(), past.y()};
+  EXPECT_THAT(sceneError(doc), HasSubstr("short of its capture circle and of the facings' deep ends"));
 }
 
 // Every bad scene is refused naming the file, the key path and the value as written, and saying

@@ -239,7 +239,9 @@ TEST(ShotSimulator, MirrorImageScenesOnAPocketedTableGiveMirrorImageResults) {
       const BallRecord &x = a.final_balls[i], &y = b.final_balls[i];
       EXPECT_EQ(x.pocketed, y.pocketed) << "shot " << shot << " ball " << i;
       // Pockets are numbered counterclockwise from the bottom-left: the mirror of k is 5 - k.
-      if (x.pocketed && y.pocketed) EXPECT_EQ(x.pocket, 5 - y.pocket) << "shot " << shot;
+      if (x.pocketed && y.pocketed) {
+        EXPECT_EQ(x.pocket, 5 - y.pocket) << "shot " << shot;
+      }
       EXPECT_NEAR(x.state.position.x(), y.state.position.x(), 1e-9) << "shot " << shot;
       EXPECT_NEAR(x.state.position.y(), -y.state.position.y(), 1e-9) << "shot " << shot;
       pocketed += x.pocketed;

@@ -88,41 +88,58 @@ bool pastDeepEnd(const Vector2d& deep_end, const Vector2d& jaw_end, const Vector
   return (p - deep_end).dot(deep_end - jaw_end) > 0;
 }
 
-// The largest distance from pocket k's capture-circle centre of the points where a ball centre
-// gets into the pocket's entrance, by sampling; -1 when there are none. Two kinds of points:
-// on the line through one facing's deep end along its inward normal, R or more in front of it,
-// past the other facing's deep end and in front of the closing line (the gates of converging
-// facings); and on the closing line (from deep end to deep end), R clear of both facings' lines
-// and not past both deep ends (facings that do not converge). The exact largest distance exceeds
-// this by at most the sample spacing (distance is 1-Lipschitz).
+// Whether a facing holds a ball centre at p: beside it (between its ends) and less than R in front.
+bool holds(const CushionSegment& facing, const Vector2d& p, double R) {
+  const Vector2d along = facing.end_m - facing.start_m;
+  const double beside = along.dot(p - facing.start_m);
+  return beside >= 0 && beside <= along.squaredNorm() &&
+         facing.inward_normal.dot(p - facing.start_m) < R;
+}
+
+// The radius pocket k's capture circle needs (at its offset) to keep every ball in, by sampling;
+// -1 when no ball gets past the facings. Converging facings (the closing line lies past both deep
+// ends): the gates are the points on the line through one facing's deep end along its inward
+// normal, R or more in front of it, past the other facing's deep end and in front of the closing
+// line; the circle must hold either all of them or the part of the triangle they bound next to the
+// closing line (its samples: the closing line and the segment between the gates' inner ends),
+// whichever needs less. Otherwise: the points of the closing line (from deep end to deep end) that
+// neither facing holds. The exact value exceeds this by at most the sample spacing (distance is
+// 1-Lipschitz).
 double sampledReach(const Table& table, std::size_t k, double R) {
   const CushionSegment& entry = table.cushions[3 * k];
   const CushionSegment& exit = table.cushions[3 * k + 1];
   const Vector2d a = entry.end_m, b = exit.start_m, centre = table.pockets[k].capture.centre_m;
   const Vector2d outward = table.pockets[k].axis;
-  double farthest = -1;
+  const Vector2d a_gate = a + R * entry.inward_normal, b_gate = b + R * exit.inward_normal;
   // Farther than any gate reaches on the tables tested here (their facings' deep-end lines meet
   // within 0.15 m; a side facing nearly along its rail would need more).
   const double span_m = 4 * (b - a).norm() + 4 * R;
+  double gates = -1, next_to_closing = -1, closing = -1;
   for (int i = 0; i <= kClosingLineSamples; ++i) {
     const double f = static_cast<double>(i) / kClosingLineSamples;
     const Vector2d on_line = a + f * (b - a);
-    if (entry.inward_normal.dot(on_line - entry.start_m) >= R &&
-        exit.inward_normal.dot(on_line - exit.start_m) >= R &&
-        !(pastDeepEnd(a, entry.start_m, on_line) && pastDeepEnd(b, exit.end_m, on_line))) {
-      farthest = std::max(farthest, (on_line - centre).norm());
+    if (!holds(entry, on_line, R) && !holds(exit, on_line, R)) {
+      closing = std::max(closing, (on_line - centre).norm());
     }
+    next_to_closing = std::max({next_to_closing, (on_line - centre).norm(),
+                                (a_gate + f * (b_gate - a_gate) - centre).norm()});
     const double s = R + f * span_m;
     for (const auto& [from, normal, other_deep, other_jaw] :
          {std::make_tuple(a, entry.inward_normal, b, exit.end_m),
           std::make_tuple(b, exit.inward_normal, a, entry.start_m)}) {
       const Vector2d q = from + s * normal;
       if (pastDeepEnd(other_deep, other_jaw, q) && (q - a).dot(outward) < 0) {
-        farthest = std::max(farthest, (q - centre).norm());
+        gates = std::max(gates, (q - centre).norm());
       }
     }
   }
-  return farthest;
+  // Converging facings: the closing line lies past both deep ends (then without gates no ball
+  // gets in).
+  const Vector2d middle = (a + b) / 2;
+  if (pastDeepEnd(a, entry.start_m, middle) && pastDeepEnd(b, exit.end_m, middle)) {
+    return gates >= 0 ? std::min(gates, next_to_closing) : -1;
+  }
+  return closing;
 }
 
 // The largest spacing of sampledReach's samples for pocket k, m: those along the gates.
@@ -710,10 +727,11 @@ TEST_F(CaptureCircleTest, ABallRadiusThatIsNotPositiveIsRefused) {
 }
 
 // The check's promise, by simulation: on tables with random pocket shapes (facing angles 95-175
-// deg, mouths, capture offsets up to 0.12 m) whose capture radius is cut down to just above the
-// smallest the check accepts, no ball sent at a pocket (anywhere across 1.5 times its mouth, any
-// speed to 4.3 m/s and spin) leaves the table. (The check that covered only the closing line let
-// about 2 % of such shots out.)
+// deg, facings 4 to 60 mm, mouths, capture offsets up to 0.12 m) whose capture radius is cut down
+// to just above the smallest the check accepts, no ball sent at a pocket (anywhere across 1.5
+// times its mouth, any speed to 4.3 m/s and spin) leaves the table. (The check that covered only
+// the closing line let about 2 % of such shots out; the one that then missed short diverging
+// facings, about 0.15 %.)
 TEST(CaptureCircle, AtTheSmallestAcceptedRadiusNoBallLeavesTheTable) {
   std::ifstream file(assetsDirectory() + "/tables/pool-9ft.json");
   const nlohmann::json base = nlohmann::json::parse(file);
@@ -735,6 +753,7 @@ TEST(CaptureCircle, AtTheSmallestAcceptedRadiusNoBallLeavesTheTable) {
     for (const char* kind : {"corner_pocket", "side_pocket"}) {
       document[kind]["facing_angle_deg"] = 95 + 80 * unit(random);
       document[kind]["capture_offset_m"] = 0.12 * unit(random);
+      document[kind]["facing_length_m"] = 0.004 + 0.056 * unit(random);
       document[kind]["mouth_width_m"] = (kind[0] == 'c' ? 0.09 : 0.10) + 0.06 * unit(random);
       document[kind]["capture_radius_m"] = 1.0;
     }
