@@ -225,25 +225,35 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
     }
     return false;
   };
-  const auto inOpening = [&](const Eigen::Vector2d& p) {
-    if (!insideOutline(geometry.outline, p) || pastBothDeepEnds(p)) return false;
+  const auto inCapture = [&](const Eigen::Vector2d& p) {
     for (const Circle& capture : geometry.pockets) {
-      if ((p - capture.centre_m).norm() <= capture.radius_m) return false;
+      if ((p - capture.centre_m).norm() <= capture.radius_m) return true;
     }
-    return true;
+    return false;
   };
   for (std::size_t i = 0; i < result.balls.size(); ++i) {
     const PlacedBall& b = result.balls[i];
     const bool between_rails = std::abs(b.position_m.x()) <= x_limit + kPlacementSlack_m &&
                                std::abs(b.position_m.y()) <= y_limit + kPlacementSlack_m;
-    if (!between_rails && !inOpening(b.position_m)) {
-      throw std::invalid_argument(source + ": ball '" + b.id + "' at [" +
-                                  physics::valueText(b.position_m.x()) + ", " +
-                                  physics::valueText(b.position_m.y()) +
-                                  "] is off the table: |x| <= " + physics::valueText(x_limit) +
-                                  " and |y| <= " + physics::valueText(y_limit) +
-                                  " m are allowed, or a place in a pocket's opening short of its "
-                                  "capture circle and of the facings' deep ends");
+    const bool in_opening = insideOutline(geometry.outline, b.position_m);
+    const std::string where = source + ": ball '" + b.id + "' at [" +
+                              physics::valueText(b.position_m.x()) + ", " +
+                              physics::valueText(b.position_m.y()) + "]";
+    const std::string allowed = " m are allowed, or a place in a pocket's opening short of its "
+                                "capture circle and of the facings' deep ends";
+    if (!between_rails && !in_opening) {
+      throw std::invalid_argument(where + " is off the table: |x| <= " +
+                                  physics::valueText(x_limit) + " and |y| <= " +
+                                  physics::valueText(y_limit) + allowed);
+    }
+    // Between the rails too: a small or shallow pocket's circle or deep ends reach in there.
+    if (inCapture(b.position_m) || pastBothDeepEnds(b.position_m)) {
+      throw std::invalid_argument(
+          where + " is in a pocket: " +
+          (inCapture(b.position_m) ? "inside its capture circle (it would start pocketed)"
+                                   : "past both its facings' deep ends, where nothing holds it") +
+          "; |x| <= " + physics::valueText(x_limit) + " and |y| <= " +
+          physics::valueText(y_limit) + allowed);
     }
     for (std::size_t j = 0; j < i; ++j) {
       const double distance = (b.position_m - result.balls[j].position_m).norm();

@@ -26,15 +26,21 @@ constexpr int kSuggestedLimitDigits = 6;
 Vector2d leftNormal(const Vector2d& direction) { return Vector2d(-direction.y(), direction.x()); }
 Vector2d rightNormal(const Vector2d& direction) { return Vector2d(direction.y(), -direction.x()); }
 
+// The widest facing angle a table file may give, deg (see readPocketSpec).
+constexpr double kMaxFacingAngle_deg = 170;
+
 PocketSpec readPocketSpec(const JsonReader& pocket) {
   pocket.requireExactKeys({"mouth_width_m", "facing_angle_deg", "jaw_radius_m", "facing_length_m",
                            "capture_offset_m", "capture_radius_m"});
   PocketSpec spec;
   spec.mouth_width_m = pocket.positiveNumber("mouth_width_m");
   const double facing_angle_deg = pocket.finiteNumber("facing_angle_deg");
-  // At 90 degrees or less the facings would open outwards or fold back; at 180 there is no facing.
-  if (!(facing_angle_deg > 90 && facing_angle_deg < 180)) {
-    pocket.reject("facing_angle_deg", "it must lie in (90, 180) degrees");
+  // At 90 degrees or less the facings would open outwards or fold back; towards 180 a facing
+  // folds back along its rail (no real pocket: 100 to 145 degrees), and near it the pocket's
+  // entrance degenerates (a probe found balls escaping the capture check within 1e-4 deg of 180).
+  if (!(facing_angle_deg > 90 && facing_angle_deg <= kMaxFacingAngle_deg)) {
+    pocket.reject("facing_angle_deg", "it must lie in (90, " + physics::valueText(kMaxFacingAngle_deg) +
+                                          "] degrees");
   }
   spec.facing_angle_rad = facing_angle_deg * kRadiansPerDegree;
   spec.jaw_radius_m = pocket.positiveNumber("jaw_radius_m");

@@ -132,7 +132,8 @@ TEST(Scene, ABallMayHangInAPocketsOpening) {
   }
   EXPECT_TRUE(pocketed);
   doc["balls"]["1"] = {0.0, 0.64};  // inside the capture circle
-  EXPECT_THAT(sceneError(doc), HasSubstr("test.json: ball '1' at [0, 0.64] is off the table"));
+  EXPECT_THAT(sceneError(doc), HasSubstr("test.json: ball '1' at [0, 0.64] is in a pocket: inside "
+                                         "its capture circle (it would start pocketed)"));
   doc["balls"]["1"] = {0.0, 0.7};  // behind the pocket
   EXPECT_THAT(sceneError(doc), HasSubstr("pocket's opening short of its capture circle"));
   // Just past a facing's deep end, where nothing holds a ball (found by review: every stroke then
@@ -141,7 +142,13 @@ TEST(Scene, ABallMayHangInAPocketsOpening) {
   const Eigen::Vector2d past = facing.end_m + 1e-3 * (facing.end_m - facing.start_m).normalized() +
                                0.3 * scene.ball_set.radius_m * facing.inward_normal;
   doc["balls"]["1"] = {past.x(), past.y()};
-  EXPECT_THAT(sceneError(doc), HasSubstr("short of its capture circle and of the facings' deep ends"));
+  EXPECT_THAT(sceneError(doc), HasSubstr("past both its facings' deep ends, where nothing holds it"));
+  // Between the rails but already inside the top-right corner's capture circle (found by a probe:
+  // such a ball never fell in and left the table).
+  doc["balls"]["1"] = {1.236, 0.601};
+  ASSERT_LT(1.236, scene.table.length_m / 2 - scene.ball_set.radius_m);
+  EXPECT_THAT(sceneError(doc), HasSubstr("test.json: ball '1' at [1.236, 0.601] is in a pocket: "
+                                         "inside its capture circle"));
 }
 
 // Every bad scene is refused naming the file, the key path and the value as written, and saying

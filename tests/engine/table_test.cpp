@@ -585,7 +585,12 @@ TEST_F(BadTableFileTest, FacingAngleOutsideItsRangeIsRejected) {
   document["side_pocket"]["facing_angle_deg"] = 80;
   const std::string message = loadError();
   EXPECT_MENTIONS(message, "side_pocket.facing_angle_deg = 80");
-  EXPECT_MENTIONS(message, "(90, 180)");
+  EXPECT_MENTIONS(message, "(90, 170]");
+  document["side_pocket"]["facing_angle_deg"] = 170.5;  // folding back along the rail
+  EXPECT_MENTIONS(loadError(), "side_pocket.facing_angle_deg = 170.5");
+  document["side_pocket"]["facing_angle_deg"] = 170;
+  std::ofstream(path) << document.dump(2);
+  EXPECT_NO_THROW(loadTable(path));
 }
 
 TEST_F(BadTableFileTest, FacingsLongEnoughToCrossAreRejected) {
