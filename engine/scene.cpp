@@ -211,23 +211,10 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   // clear of the facings and jaw roundings.
   const double R = result.ball_set.radius_m;
   const double x_limit = result.table.length_m / 2 - R, y_limit = result.table.width_m / 2 - R;
-  const TableGeometry geometry = geometryOf(result.table);
-  // Past both facings' deep ends of a pocket nothing holds a ball, and the capture check
-  // (checkCapturesCoverOpenings) says nothing of a ball that starts there.
-  const auto pastBothDeepEnds = [&](const Eigen::Vector2d& p) {
-    for (std::size_t k = 0; k < result.table.pockets.size(); ++k) {
-      const CushionSegment& entry = result.table.cushions[3 * k];
-      const CushionSegment& exit = result.table.cushions[3 * k + 1];
-      if ((p - entry.end_m).dot(entry.end_m - entry.start_m) > 0 &&
-          (p - exit.start_m).dot(exit.start_m - exit.end_m) > 0) {
-        return true;
-      }
-    }
-    return false;
-  };
+  const std::vector<Eigen::Vector2d> outline = cushionOutline(result.table.cushions);
   const auto inCapture = [&](const Eigen::Vector2d& p) {
-    for (const Circle& capture : geometry.pockets) {
-      if ((p - capture.centre_m).norm() <= capture.radius_m) return true;
+    for (const Pocket& pocket : result.table.pockets) {
+      if ((p - pocket.capture.centre_m).norm() <= pocket.capture.radius_m) return true;
     }
     return false;
   };
@@ -235,25 +222,23 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
     const PlacedBall& b = result.balls[i];
     const bool between_rails = std::abs(b.position_m.x()) <= x_limit + kPlacementSlack_m &&
                                std::abs(b.position_m.y()) <= y_limit + kPlacementSlack_m;
-    const bool in_opening = insideOutline(geometry.outline, b.position_m);
-    const std::string where = source + ": ball '" + b.id + "' at [" +
-                              physics::valueText(b.position_m.x()) + ", " +
-                              physics::valueText(b.position_m.y()) + "]";
-    const std::string allowed = " m are allowed, or a place in a pocket's opening short of its "
-                                "capture circle and of the facings' deep ends";
-    if (!between_rails && !in_opening) {
-      throw std::invalid_argument(where + " is off the table: |x| <= " +
-                                  physics::valueText(x_limit) + " and |y| <= " +
-                                  physics::valueText(y_limit) + allowed);
-    }
+    const bool off_table = !between_rails && !insideOutline(outline, b.position_m);
     // Between the rails too: a small or shallow pocket's circle or deep ends reach in there.
-    if (inCapture(b.position_m) || pastBothDeepEnds(b.position_m)) {
-      throw std::invalid_argument(
-          where + " is in a pocket: " +
-          (inCapture(b.position_m) ? "inside its capture circle (it would start pocketed)"
-                                   : "past both its facings' deep ends, where nothing holds it") +
-          "; |x| <= " + physics::valueText(x_limit) + " and |y| <= " +
-          physics::valueText(y_limit) + allowed);
+    const bool in_capture = !off_table && inCapture(b.position_m);
+    if (off_table || in_capture || pastBothDeepEnds(result.table, b.position_m)) {
+      const std::string where = source + ": ball '" + b.id + "' at [" +
+                                physics::valueText(b.position_m.x()) + ", " +
+                                physics::valueText(b.position_m.y()) + "]";
+      const std::string why =
+          off_table ? " is off the table"
+          : in_capture
+              ? " is in a pocket: inside its capture circle (it would start pocketed)"
+              : " is in a pocket: past both its facings' deep ends, where nothing holds it";
+      throw std::invalid_argument(where + why + (off_table ? ": " : "; ") + "|x| <= " +
+                                  physics::valueText(x_limit) + " and |y| <= " +
+                                  physics::valueText(y_limit) +
+                                  " m are allowed, or a place in a pocket's opening short of its "
+                                  "capture circle and of the facings' deep ends");
     }
     for (std::size_t j = 0; j < i; ++j) {
       const double distance = (b.position_m - result.balls[j].position_m).norm();

@@ -22,7 +22,6 @@ constexpr double kRadiansPerDegree = kPi / 180.0;
 // micrometres of the exact limit, few enough to type. They are rounded towards the allowed side.
 constexpr int kSuggestedLimitDigits = 6;
 
-// Where each pocket sits, in Table::pockets order (docs/tables.md).
 Vector2d leftNormal(const Vector2d& direction) { return Vector2d(-direction.y(), direction.x()); }
 Vector2d rightNormal(const Vector2d& direction) { return Vector2d(direction.y(), -direction.x()); }
 
@@ -396,13 +395,11 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
     double needed_m = std::numeric_limits<double>::infinity();
     for (const std::vector<Vector2d>& cover : covers) {
       std::size_t farthest = 0;
-      for (std::size_t e = 1; e < cover.size(); ++e) {
-        if ((cover[e] - pocket.capture.centre_m).norm() >
-            (cover[farthest] - pocket.capture.centre_m).norm()) {
-          farthest = e;
-        }
+      double distance = 0;
+      for (std::size_t e = 0; e < cover.size(); ++e) {
+        const double d = (cover[e] - pocket.capture.centre_m).norm();
+        if (d > distance) distance = d, farthest = e;
       }
-      const double distance = (cover[farthest] - pocket.capture.centre_m).norm();
       if (distance < needed_m) needed_m = distance, gates = &cover, worst = farthest;
     }
     if (needed_m < pocket.capture.radius_m) continue;
@@ -485,16 +482,28 @@ bool insideOutline(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vec
   return inside;
 }
 
-// The rail box is shrunk by this much, m, so that the rails on its sides do not count as crossing
-// it and points in it lie strictly inside the outline: far below any ball's size, far above the
-// rounding of table coordinates (~1e-16 m).
-constexpr double kRailBoxInset_m = 1e-9;
+bool pastBothDeepEnds(const Table& table, const Vector2d& point) {
+  for (std::size_t k = 0; k < table.pockets.size(); ++k) {
+    const CushionSegment& entry = table.cushions[3 * k];
+    const CushionSegment& exit = table.cushions[3 * k + 1];
+    if ((point - entry.end_m).dot(entry.end_m - entry.start_m) > 0 &&
+        (point - exit.start_m).dot(exit.start_m - exit.end_m) > 0) {
+      return true;
+    }
+  }
+  return false;
+}
 
 const std::vector<std::string>& pocketNames() {
   static const std::vector<std::string> names = {"bottom-left", "bottom-middle", "bottom-right",
                                                  "top-right",   "top-middle",    "top-left"};
   return names;
 }
+
+// The rail box is shrunk by this much, m, so that the rails on its sides do not count as crossing
+// it and points in it lie strictly inside the outline: far below any ball's size, far above the
+// rounding of table coordinates (~1e-16 m).
+constexpr double kRailBoxInset_m = 1e-9;
 
 Eigen::AlignedBox2d railBoxInsideOutline(const std::vector<Vector2d>& outline) {
   Eigen::AlignedBox2d box;

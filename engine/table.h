@@ -136,6 +136,11 @@ bool insideOutline(const std::vector<Eigen::Vector2d>& outline, const Eigen::Vec
 // may cross it and its corners must be inside).
 Eigen::AlignedBox2d railBoxInsideOutline(const std::vector<Eigen::Vector2d>& outline);
 
+// Whether `point` lies past both facings' deep ends of one of the table's pockets (beyond each deep
+// end's line along its facing's inward normal): no facing holds a ball there, and
+// checkCapturesCoverOpenings says nothing of a ball that starts there.
+bool pastBothDeepEnds(const Table& table, const Eigen::Vector2d& point);
+
 // The pockets' names in Table::pockets order, seen with +x to the right and +y up: "bottom-left",
 // "bottom-middle", "bottom-right", "top-right", "top-middle", "top-left".
 const std::vector<std::string>& pocketNames();

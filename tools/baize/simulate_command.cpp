@@ -91,6 +91,7 @@ void runSimulate(const SimulateFlags& flags) {
   const auto id = [&](int i) { return run.ball_ids.at(i); };
   const engine::ShotOutcome outcome = engine::shotOutcome(run, scene.cue_ball);
   const std::vector<std::string>& pocket_names = engine::pocketNames();
+  const engine::SimulationParams params = engine::simulationParamsFor(scene);
   const engine::FinalBall& cue = *outcome.ball(scene.cue_ball);
 
   std::cout << std::setprecision(4) << std::fixed;
@@ -99,7 +100,7 @@ void runSimulate(const SimulateFlags& flags) {
   std::cout << "strike: cue ball '" << scene.cue_ball << "' at " << run.strike.ball.v.norm()
             << " m/s\n";
   const nlohmann::json physics =
-      engine::physicsJson(engine::simulationParamsFor(scene), engine::cueStrikeParamsFor(scene));
+      engine::physicsJson(params, engine::cueStrikeParamsFor(scene));
   std::cout << "models: cushion " << physics["cushion"]["model"].get<std::string>()
             << ", ball-ball " << physics["ball_ball"]["model"].get<std::string>()
             << (physics["cue"].contains("squirt_end_mass_kg") ? ", squirt\n" : "\n");
@@ -129,7 +130,7 @@ void runSimulate(const SimulateFlags& flags) {
   for (const SampleRequest& request : samples) {
     const engine::Trajectory& path = r.trajectories.at(request.ball);
     const physics::BallState s =
-        engine::sampleTrajectory(engine::simulationParamsFor(scene).cloth, path, request.time_s);
+        engine::sampleTrajectory(params.cloth, path, request.time_s);
     nlohmann::json entry = {{"ball", id(request.ball)}, {"time_s", request.time_s}};
     // A pocketed ball is in its pocket from the piece that says so on; its state is where it fell.
     const engine::TrajectoryPiece* fell = nullptr;
