@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "engine/contact_geometry.h"
+#include "engine/cushion_solve_ahead.h"
 #include "physics/polynomial_roots.h"
 #include "physics/value_text.h"
 
@@ -691,6 +692,34 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     c.dt_s += now;
     return c;
   };
+  // The contact normal of a cushion or jaw contact (pointing to the ball), for a ball at `at`: a
+  // straight cushion's, or the direction from a jaw's centre to the ball.
+  auto contactNormal = [&](EventKind kind, int index, const BallState& at) -> Eigen::Vector2d {
+    if (kind == EventKind::Cushion) return table.cushions[index].inward_normal;
+    return (at.position - table.jaws[index].centre_m).normalized();
+  };
+  // Impacts solved ahead (engine/cushion_solve_ahead.h): ball i's earliest event, if it is a
+  // cushion or jaw contact, from the state the ball will have then, as moveTo() will find it. The
+  // simple rule costs less than handing it over.
+  CushionSolveAhead ahead(p, n);
+  const bool solve_ahead = p.cushion_model != CushionModelChoice::SimpleRestitution;
+  auto solveAhead = [&](int i) {
+    const Candidate& c = next[i];
+    if (!(c.dt_s < kInfinity) || (c.kind != EventKind::Cushion && c.kind != EventKind::Jaw)) {
+      ahead.forget(i);
+      return;
+    }
+    const Ball& b = balls[i];
+    BallState at = b.state;
+    const double dt = std::min(c.dt_s - b.reference_time_s, b.change_dt_s);
+    if (dt > 0) at = physics::advanceWithinState(p.cloth, at, dt);
+    const physics::BallVelocity local =
+        ContactFrame(contactNormal(c.kind, c.index, at)).toLocal(at);
+    if (local.v.y() > 0)
+      ahead.predict(i, c.dt_s, local);
+    else
+      ahead.forget(i);
+  };
   auto predictOwn = [&](int i) {  // ball i was settled at `now`
     Ball& b = balls[i];
     Candidate best_own{b.change_dt_s, EventKind::StateChange, i};
@@ -875,6 +904,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         continue;
       }
       own[i] = Candidate{};
+      ahead.forget(i);
     }
     for (int i : changed) {
       const bool now_active = !balls[i].pocketed && (balls[i].moves || own[i].dt_s < kInfinity);
@@ -954,6 +984,12 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         if (c.dt_s < kInfinity && c < next[k]) next[k] = c;
       }
     }
+    // A ball whose earliest event is now a cushion or jaw contact has it solved ahead, while other
+    // balls move too (a lone ball's next events are its own: nothing to overlap with).
+    if (solve_ahead && movers.size() >= 2) {
+      for (int k : active)
+        if (rescanned[k]) solveAhead(k);
+    }
     Candidate best;
     for (int k : active)
       if (next[k].dt_s < kInfinity && next[k] < best) best = next[k];
@@ -1002,18 +1038,15 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
         break;
       case EventKind::Cushion:
       case EventKind::Jaw: {
-        // The chosen cushion model (engine/cushion_contact.h) in the frame of the contact normal: a
-        // straight cushion's, or the direction from a jaw's centre to the ball.
-        const Eigen::Vector2d normal =
-            best.kind == EventKind::Cushion
-                ? table.cushions[best.index].inward_normal
-                : Eigen::Vector2d((a.position - table.jaws[best.index].centre_m).normalized());
+        // The chosen cushion model (engine/cushion_contact.h) in the frame of the contact normal,
+        // or the helper's answer from the same input.
+        const Eigen::Vector2d normal = contactNormal(best.kind, best.index, a);
         const ContactFrame frame(normal);
         const physics::BallVelocity local = frame.toLocal(a);
         const bool pressed = path_a.quadratic_mps2.dot(normal) < 0;
         if (local.v.y() > 0 || pressed) {
           physics::BallVelocity after = local;
-          if (local.v.y() > 0) after = resolveCushionContact(p, local);
+          if (local.v.y() > 0) after = ahead.resolve(best.ball, local);
           // In the cushion's frame the normal into the table is -y.
           if (pressed)
             releasePressedContact(p.cushion, physics::kineticEnergy(p.cushion, local),

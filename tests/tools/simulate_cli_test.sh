@@ -189,9 +189,10 @@ set --
 python3 - "$work/shots.csv" "$root/assets/scenes" <<'PY'
 import csv, os, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
-assert list(rows[0]) == ["scene", "median_us", "events"], list(rows[0])
+assert list(rows[0]) == ["scene", "median_us", "one_core_us", "events"], list(rows[0])
 scenes = sorted(f[:-5] for f in os.listdir(sys.argv[2]) if f.endswith(".json"))
 assert [r["scene"] for r in rows] == scenes + ["random-single-shots"], [r["scene"] for r in rows]
-assert all(float(r["median_us"]) > 0 and float(r["events"]) >= 1 for r in rows)
+assert all(float(r["median_us"]) > 0 and float(r["one_core_us"]) > 0 and float(r["events"]) >= 1
+           for r in rows)
 PY
 echo "simulate CLI: all checks passed"

@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "engine/cushion_solve_ahead.h"
 #include "engine/json_reader.h"
 #include "engine/scene.h"
 #include "engine/shot_outcome.h"
@@ -112,6 +113,9 @@ int runBatch(const BatchFlags& flags) {
   const int threads = flags.threads > 0
                           ? flags.threads
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  // A batch is for throughput, and its own threads are how it uses the cores: the helper that
+  // solves impacts ahead for one shot's latency would only compete with them.
+  engine::CushionSolveAhead::setEnabled(false);
   const bool from_stdin = flags.input == "-";
   std::ifstream file;
   if (!from_stdin) {

@@ -12,6 +12,7 @@
 #include <random>
 #include <sstream>
 
+#include "engine/cushion_solve_ahead.h"
 #include "engine/scene.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
@@ -29,20 +30,40 @@ struct BenchShotsFlags {
 // Random shots run untimed before the timed pass (as each scene runs once untimed first).
 constexpr std::size_t kWarmUpShots = 50;
 
-// Median wall time of simulating `scene` (microseconds) and its event count.
-std::pair<double, std::size_t> timeScene(const engine::Scene& scene, int repeat) {
-  std::vector<double> times;
+// One run of `scene` (wall time in microseconds), with or without the helper that solves cushion
+// impacts ahead on a second core (engine/cushion_solve_ahead.h).
+double timedRun(const engine::Scene& scene, bool helper, std::size_t* events) {
+  engine::CushionSolveAhead::setEnabled(helper);
+  const auto start = std::chrono::steady_clock::now();
+  const engine::SceneRun run = engine::runScene(scene);
+  const double us =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+  *events = run.result.events.size();
+  return us;
+}
+
+struct Timing {
+  double median_us = 0;    // as simulate() runs by default: with the helper on a second core
+  double one_core_us = 0;  // without it
+  std::size_t events = 0;
+};
+
+// Runs `scene` with and without the helper, in alternating order (a shot's first run is slower:
+// its data is not yet in the caches), adding each run's time to `both` and `one`.
+void timePair(const engine::Scene& scene, bool helper_first, std::vector<double>* both,
+              std::vector<double>* one, std::size_t* events) {
+  for (const bool helper : {helper_first, !helper_first})
+    (helper ? both : one)->push_back(timedRun(scene, helper, events));
+}
+
+// Median wall times of simulating `scene` with and without the helper, side by side, and its
+// event count.
+Timing timeScene(const engine::Scene& scene, int repeat) {
+  std::vector<double> both, one;
   std::size_t events = 0;
   engine::runScene(scene);  // untimed warm-up: caches and the clock frequency settle first
-  for (int i = 0; i < repeat; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    const engine::SceneRun run = engine::runScene(scene);
-    times.push_back(
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
-            .count());
-    events = run.result.events.size();
-  }
-  return {median(times), events};
+  for (int i = 0; i < repeat; ++i) timePair(scene, i % 2 == 0, &both, &one, &events);
+  return {median(both), median(one), events};
 }
 
 // A seeded set of single shots on the 9 ft table: the cue ball and one object ball anywhere, the
@@ -79,36 +100,35 @@ void runBenchShots(const BenchShotsFlags& flags) {
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
   std::ostringstream table;
-  table << "scene,median_us,events\n";
+  table << "scene,median_us,one_core_us,events\n";
   std::vector<std::filesystem::path> files;
   for (const auto& f : std::filesystem::directory_iterator(engine::assetsDirectory() + "/scenes")) {
     files.push_back(f.path());
   }
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
-    const auto [us, events] = timeScene(engine::loadScene(f.string()), flags.repeat);
-    table << f.stem().string() << ',' << std::setprecision(4) << us << ',' << events << '\n';
+    const Timing t = timeScene(engine::loadScene(f.string()), flags.repeat);
+    table << f.stem().string() << ',' << std::setprecision(4) << t.median_us << ',' << t.one_core_us
+          << ',' << t.events << '\n';
   }
   const std::vector<engine::Scene> shots = randomShots(flags.random_shots);
   for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i)
     engine::runScene(shots[i]);  // untimed warm-up, as for the scenes
-  std::vector<double> times, events;
-  const auto all_start = std::chrono::steady_clock::now();
-  for (const engine::Scene& s : shots) {
-    const auto start = std::chrono::steady_clock::now();
-    const engine::SceneRun run = engine::runScene(s);
-    times.push_back(
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
-            .count());
-    events.push_back(static_cast<double>(run.result.events.size()));
+  std::vector<double> both, one, events;
+  for (std::size_t k = 0; k < shots.size(); ++k) {
+    std::size_t count = 0;
+    timePair(shots[k], k % 2 == 0, &both, &one, &count);
+    events.push_back(static_cast<double>(count));
   }
-  const double all_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - all_start).count();
-  table << "random-single-shots," << std::setprecision(4) << median(times) << ',' << median(events)
-        << '\n';
+  double one_core_total_s = 0;
+  for (const double us : one) one_core_total_s += us * 1e-6;
+  engine::CushionSolveAhead::setEnabled(true);
+  table << "random-single-shots," << std::setprecision(4) << median(both) << ',' << median(one)
+        << ',' << median(events) << '\n';
   std::cout << table.str();
-  std::cout << "random single shots: " << std::setprecision(4) << shots.size() / all_s
-            << " shots/s on one core (" << shots.size() << " shots; median events as above)\n";
+  std::cout << "random single shots: " << std::setprecision(4) << shots.size() / one_core_total_s
+            << " shots/s on one core (" << shots.size()
+            << " shots without the helper; median events as above)\n";
   if (csv) {
     csv->stream() << table.str();
     csv->commit();
