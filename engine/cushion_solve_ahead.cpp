@@ -4,11 +4,12 @@
 
 #include <array>
 #include <atomic>
-#include <chrono>
+#include <cfenv>
 #include <condition_variable>
 #include <cstring>
 #include <limits>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 #include "engine/cushion_contact.h"
@@ -19,22 +20,24 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// How long the helper stays awake, watching for the next shot, after it last served one: shots
-// run back to back (a bench, a planner's search) find it awake instead of paying the tens of
-// microseconds a sleeping thread takes to wake.
-constexpr auto kAwakeAfterShot = std::chrono::microseconds(500);
 // How long the loop waits for an impact the helper is solving before solving it itself: far
 // longer than a slow impact takes (about 0.1 ms), short against the milliseconds a helper
-// descheduled on a busy machine may lose. After kSpinWait it yields its core while it waits, in
-// case the helper is waiting for that core.
+// descheduled on a busy machine may lose. After kSpinWait it yields its core while it waits.
 constexpr auto kLongestWait = std::chrono::microseconds(500);
 constexpr auto kSpinWait = std::chrono::microseconds(20);
+// How long wakeHelper() waits for the helper to be awake: a thread woken on a busy machine may
+// wait for a core for milliseconds.
+constexpr auto kLongestWakeWait = std::chrono::milliseconds(100);
+// The helper notes the core it runs on every this many idle turns (a shot does not claim a helper
+// on its own core).
+constexpr int kCpuCheckTurns = 64;
 
 enum JobState : int { kEmpty, kQueued, kRunning, kDone, kFailed, kCancelled };
 
 // One impact handed to the helper. The loop writes the input before it queues the job (release
-// on `state`) and reads the output only once the helper has published it.
-struct Job {
+// on `state`) and reads the output only once the helper has published it. Each job on its own
+// cache line: the loop writes one while the helper polls the others.
+struct alignas(64) Job {
   std::atomic<int> state{kEmpty};
   std::atomic<double> event_time_s{0};  // read while queued, to take the earliest contact first
   int ball = -1;                        // the ball whose prediction it holds (loop only); -1: free
@@ -52,33 +55,87 @@ void spinPause() {
 #endif
 }
 
-// The cores this process may run on (its affinity mask; the machine's count if unknown).
-int usableCores() {
-  cpu_set_t set;
-  if (sched_getaffinity(0, sizeof set, &set) == 0) return CPU_COUNT(&set);
-  return static_cast<int>(std::thread::hardware_concurrency());
+// The cores in the affinity mask of the thread that first asks (the machine's count if unknown),
+// read once.
+bool twoCores() {
+  static const bool two = [] {
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) == 0) return CPU_COUNT(&set) >= 2;
+    return std::thread::hardware_concurrency() >= 2;
+  }();
+  return two;
 }
 
 std::atomic<bool> g_enabled{true};
-std::atomic<long> g_taken_ahead{0};
+std::atomic<long> g_taken_ahead{0}, g_shots_served{0};
+// When the last shot ended (steady clock ticks since its epoch).
+constexpr Clock::rep kNoShotYet = std::numeric_limits<Clock::rep>::min();
+std::atomic<Clock::rep> g_last_shot_end{kNoShotYet};
 
 }  // namespace
 
-// The process's helper thread: it solves the claiming shot's queued impacts, earliest contact
-// first, and otherwise waits for a shot (spinning a little, then asleep).
+// The process's helper thread. Asleep until a shot wakes it; then awake (spinning) for
+// kAwakeAfterShot after it last served a shot, solving the claiming shot's queued impacts,
+// earliest contact first, while one holds it. It is never destroyed: a shot may run while the
+// program exits.
 class CushionSolveAhead::Helper {
  public:
   static constexpr int kJobCount = 64;  // impacts in flight; with all taken the loop solves
 
-  static Helper* claim(const SimulationParams& params) {
-    static const bool two_cores = usableCores() >= 2;
-    if (!two_cores || !g_enabled.load(std::memory_order_relaxed)) return nullptr;
-    static Helper helper;
-    return helper.tryClaim(params) ? &helper : nullptr;
+  // The helper if it has been started, else null.
+  static Helper* existing() { return instance_.load(std::memory_order_acquire); }
+  // The helper, started if need be; null if its thread cannot start (then never again).
+  static Helper* startOrGet() {
+    if (Helper* helper = existing()) return helper;
+    static std::mutex start_mutex;
+    static bool start_failed = false;
+    std::lock_guard<std::mutex> lock(start_mutex);
+    if (Helper* helper = existing()) return helper;
+    if (start_failed) return nullptr;
+    try {
+      Helper* helper = new Helper;
+      instance_.store(helper, std::memory_order_release);
+      return helper;
+    } catch (const std::system_error&) {
+      start_failed = true;
+      return nullptr;
+    }
+  }
+  // For this shot: only if the helper is awake on another core, no other shot holds it and no
+  // impact of the last shot is still being solved (its job and the parameters are reused).
+  bool tryClaim(const SimulationParams& params) {
+    if (!awake_.load(std::memory_order_acquire)) return false;
+    const int core = sched_getcpu();
+    if (core >= 0 && core == core_.load(std::memory_order_relaxed)) return false;
+    bool free = false;
+    if (!claimed_.compare_exchange_strong(free, true, std::memory_order_acquire)) return false;
+    for (int j = 0; j < used_; ++j) {
+      if (jobs_[j].state.load(std::memory_order_acquire) == kRunning) {
+        claimed_.store(false, std::memory_order_release);
+        return false;
+      }
+    }
+    params_ = params;
+    std::fegetenv(&environment_);
+    for (int j = 0; j < used_; ++j) {
+      jobs_[j].state.store(kEmpty, std::memory_order_relaxed);
+      jobs_[j].ball = -1;
+    }
+    used_ = 0;
+    used_shared_.store(0, std::memory_order_relaxed);
+    // Either this sees the helper about to sleep, or the helper sees it serving and stays awake
+    // (both sequentially consistent).
+    serving_.store(true, std::memory_order_seq_cst);
+    if (!awake_.load(std::memory_order_seq_cst)) {
+      release();
+      return false;
+    }
+    g_shots_served.fetch_add(1, std::memory_order_relaxed);
+    return true;
   }
 
   // Stops serving the shot: its queued impacts are dropped; one being solved finishes (on the
-  // helper's copy of the parameters) before the next shot can claim the helper.
+  // helper's copy of the parameters), and until then no shot can claim the helper.
   void release() {
     for (int j = 0; j < used_; ++j) {
       int queued = kQueued;
@@ -88,9 +145,21 @@ class CushionSolveAhead::Helper {
     claimed_.store(false, std::memory_order_release);
   }
 
+  bool awake() const { return awake_.load(std::memory_order_acquire); }
+
+  // Keeps the helper awake for kAwakeAfterShot from now (waking it if it sleeps).
+  void wake() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      wake_requested_ = true;
+    }
+    wake_.notify_one();
+  }
+
   // Solves the queued impact with the earliest contact, if there is one; whether it found one.
-  // Called by the helper, and by the loop while it waits for the helper.
-  bool solveOne() {
+  // Called by the helper (in the shot's floating-point environment), and by the loop while it
+  // waits for the helper.
+  bool solveOne(bool set_environment) {
     int best = -1;
     double best_time = std::numeric_limits<double>::infinity();
     const int used = used_shared_.load(std::memory_order_acquire);
@@ -107,6 +176,7 @@ class CushionSolveAhead::Helper {
     int queued = kQueued;
     if (!job.state.compare_exchange_strong(queued, kRunning, std::memory_order_acq_rel))
       return true;  // taken meanwhile
+    if (set_environment) std::fesetenv(&environment_);
     try {
       job.output = resolveCushionContact(params_, job.input);
       job.state.store(kDone, std::memory_order_release);
@@ -135,76 +205,96 @@ class CushionSolveAhead::Helper {
   int indexOf(const Job* job) const { return static_cast<int>(job - jobs_.data()); }
 
  private:
-  Helper() : thread_([this] { run(); }) {}
-  ~Helper() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      quit_ = true;
-    }
-    wake_.notify_one();
-    thread_.join();
-  }
-
-  bool tryClaim(const SimulationParams& params) {
-    bool free = false;
-    if (!claimed_.compare_exchange_strong(free, true, std::memory_order_acquire)) return false;
-    // An impact of the last shot may still be solving: it reads params_ and its job.
-    for (int j = 0; j < used_; ++j)
-      while (jobs_[j].state.load(std::memory_order_acquire) == kRunning) spinPause();
-    params_ = params;
-    for (int j = 0; j < used_; ++j) {
-      jobs_[j].state.store(kEmpty, std::memory_order_relaxed);
-      jobs_[j].ball = -1;
-    }
-    used_ = 0;
-    used_shared_.store(0, std::memory_order_relaxed);
-    {
-      // Under the lock: a helper just going to sleep then either sees serving_ or is woken.
-      std::lock_guard<std::mutex> lock(mutex_);
-      serving_.store(true, std::memory_order_release);
-    }
-    wake_.notify_one();
-    return true;
-  }
+  Helper() : thread_([this] { run(); }) { thread_.detach(); }
 
   void run() {
     for (;;) {
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, [&] { return wake_requested_; });
+        wake_requested_ = false;
+      }
+      awake_.store(true, std::memory_order_seq_cst);
       auto last_served = Clock::now();
-      while (Clock::now() - last_served < kAwakeAfterShot) {
-        if (!serving_.load(std::memory_order_acquire)) {
+      for (long turn = 0;; ++turn) {
+        if (turn % kCpuCheckTurns == 0) core_.store(sched_getcpu(), std::memory_order_relaxed);
+        if (serving_.load(std::memory_order_acquire)) {
+          if (!solveOne(true)) spinPause();
+          last_served = Clock::now();
+          continue;
+        }
+        if (Clock::now() - last_served < kAwakeAfterShot) {
           spinPause();
           continue;
         }
-        if (!solveOne()) spinPause();
-        last_served = Clock::now();
+        if (wakeRequested()) {  // asked to stay awake for the next shot
+          last_served = Clock::now();
+          continue;
+        }
+        awake_.store(false, std::memory_order_seq_cst);
+        if (!serving_.load(std::memory_order_seq_cst)) break;  // asleep until woken
+        awake_.store(true, std::memory_order_seq_cst);         // a shot claimed it just now
       }
-      std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, [&] { return serving_.load(std::memory_order_acquire) || quit_; });
-      if (quit_) return;
     }
   }
 
-  std::atomic<bool> claimed_{false};  // a shot holds the helper
-  std::atomic<bool> serving_{false};  // the shot may queue jobs
-  int used_ = 0;                      // jobs [0, used_) were handed out in this shot (loop only)
-  std::atomic<int> used_shared_{0};   // the same, for the helper
-  SimulationParams params_;           // the claiming shot's
+  // A wake-up asked for while awake extends the awake time (consumed here).
+  bool wakeRequested() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!wake_requested_) return false;
+    wake_requested_ = false;
+    return true;
+  }
+
+  static std::atomic<Helper*> instance_;
+
+  alignas(64) std::atomic<bool> claimed_{false};  // a shot holds the helper
+  std::atomic<bool> serving_{false};              // and may queue jobs
+  std::atomic<bool> awake_{false};                // spinning, not asleep
+  alignas(64) std::atomic<int> core_{-1};         // where the helper last ran
+  alignas(64) std::atomic<int> used_shared_{0};   // jobs [0, used) handed out in this shot
+  int used_ = 0;                                  // the same, the loop's copy
+  SimulationParams params_;                       // the claiming shot's
+  std::fenv_t environment_;                       // and its floating-point environment
   std::array<Job, kJobCount> jobs_;
   std::mutex mutex_;
   std::condition_variable wake_;
-  bool quit_ = false;
-  std::thread thread_;  // last: starts once the members above exist
+  bool wake_requested_ = false;  // under mutex_
+  std::thread thread_;           // last: starts once the members above exist
 };
+
+std::atomic<CushionSolveAhead::Helper*> CushionSolveAhead::Helper::instance_{nullptr};
 
 void CushionSolveAhead::setEnabled(bool enabled) { g_enabled.store(enabled); }
 bool CushionSolveAhead::enabled() { return g_enabled.load(); }
+bool CushionSolveAhead::available() { return enabled() && twoCores() && Helper::startOrGet(); }
+void CushionSolveAhead::wakeHelper() {
+  if (!available()) return;
+  Helper* helper = Helper::startOrGet();
+  helper->wake();
+  const auto asked = Clock::now();
+  while (!helper->awake() && Clock::now() - asked < kLongestWakeWait) std::this_thread::yield();
+}
+long CushionSolveAhead::shotsServed() { return g_shots_served.load(); }
 long CushionSolveAhead::impactsTakenAhead() { return g_taken_ahead.load(); }
 
 CushionSolveAhead::CushionSolveAhead(const SimulationParams& params, int ball_count)
-    : params_(params), job_of_ball_(ball_count, -1) {}
+    : params_(params), started_(Clock::now()), job_of_ball_(ball_count, -1) {}
 
 CushionSolveAhead::~CushionSolveAhead() {
-  if (helper_) helper_->release();
+  if (helper_) {
+    helper_->release();  // awake for kAwakeAfterShot from its last job
+  } else if (claim_tried_ && enabled() && twoCores()) {
+    // A shot that could have used the helper, run back to back with the last one: keep (or get)
+    // it awake for the next.
+    const Clock::rep last = g_last_shot_end.load(std::memory_order_relaxed);
+    const Clock::rep gap = started_.time_since_epoch().count() - last;
+    if (last != kNoShotYet &&
+        gap < std::chrono::duration_cast<Clock::duration>(kAwakeAfterShot).count()) {
+      if (Helper* helper = Helper::startOrGet()) helper->wake();
+    }
+  }
+  g_last_shot_end.store(Clock::now().time_since_epoch().count(), std::memory_order_relaxed);
 }
 
 void CushionSolveAhead::predict(int ball, double event_time_s,
@@ -212,8 +302,10 @@ void CushionSolveAhead::predict(int ball, double event_time_s,
   if (!helper_) {
     if (claim_tried_) return;
     claim_tried_ = true;
-    helper_ = Helper::claim(params_);
-    if (!helper_) return;
+    if (!enabled() || !twoCores()) return;
+    Helper* helper = Helper::existing();
+    if (!helper || !helper->tryClaim(params_)) return;
+    helper_ = helper;
   }
   // Predicted again unchanged (a neighbour's event made the loop look again): keep the job.
   if (job_of_ball_[ball] >= 0) {
@@ -254,8 +346,9 @@ physics::BallVelocity CushionSolveAhead::resolve(int ball, const physics::BallVe
       while (state == kRunning) {
         const auto waited = Clock::now() - waiting_since;
         if (waited > kLongestWait) break;
-        // Meanwhile solve a later impact the helper has not started, if there is one.
-        if (!helper_->solveOne()) {
+        // Meanwhile solve a later impact the helper has not started, if there is one (which can
+        // overrun the wait by that impact).
+        if (!helper_->solveOne(false)) {
           if (waited < kSpinWait)
             spinPause();
           else

@@ -981,14 +981,22 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
       for (int k : partners[i]) {
         if (!is_active[k] || rescanned[k]) continue;
         const Candidate c = pairCandidate(k, i);
-        if (c.dt_s < kInfinity && c < next[k]) next[k] = c;
+        if (c.dt_s < kInfinity && c < next[k]) {
+          next[k] = c;
+          ahead.forget(k);  // its contact, if one was handed over, now comes after this pair's
+        }
       }
     }
     // A ball whose earliest event is now a cushion or jaw contact has it solved ahead, while other
     // balls move too (a lone ball's next events are its own: nothing to overlap with).
-    if (solve_ahead && movers.size() >= 2) {
-      for (int k : active)
-        if (rescanned[k]) solveAhead(k);
+    if (solve_ahead && ahead.mayUse()) {
+      for (int k : active) {
+        if (!rescanned[k]) continue;
+        if (movers.size() >= 2)
+          solveAhead(k);
+        else
+          ahead.forget(k);
+      }
     }
     Candidate best;
     for (int k : active)

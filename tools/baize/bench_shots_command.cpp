@@ -30,15 +30,27 @@ struct BenchShotsFlags {
 // Random shots run untimed before the timed pass (as each scene runs once untimed first).
 constexpr std::size_t kWarmUpShots = 50;
 
+// Cushion and jaw impacts in the runs with the helper, and how many it answered.
+struct HelperTally {
+  long impacts = 0;
+  long taken_ahead = 0;
+};
+
 // One run of `scene` (wall time in microseconds), with or without the helper that solves cushion
 // impacts ahead on a second core (engine/cushion_solve_ahead.h).
-double timedRun(const engine::Scene& scene, bool helper, std::size_t* events) {
+double timedRun(const engine::Scene& scene, bool helper, std::size_t* events, HelperTally* tally) {
   engine::CushionSolveAhead::setEnabled(helper);
+  const long taken_before = engine::CushionSolveAhead::impactsTakenAhead();
   const auto start = std::chrono::steady_clock::now();
   const engine::SceneRun run = engine::runScene(scene);
   const double us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
   *events = run.result.events.size();
+  if (helper) {
+    tally->taken_ahead += engine::CushionSolveAhead::impactsTakenAhead() - taken_before;
+    for (const engine::Event& e : run.result.events)
+      tally->impacts += e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw;
+  }
   return us;
 }
 
@@ -50,19 +62,16 @@ struct Timing {
 
 // Runs `scene` with and without the helper, in alternating order (a shot's first run is slower:
 // its data is not yet in the caches), adding each run's time to `both` and `one`.
-void timePair(const engine::Scene& scene, bool helper_first, std::vector<double>* both,
-              std::vector<double>* one, std::size_t* events) {
-  for (const bool helper : {helper_first, !helper_first})
-    (helper ? both : one)->push_back(timedRun(scene, helper, events));
-}
-
-// Median wall times of simulating `scene` with and without the helper, side by side, and its
-// event count.
-Timing timeScene(const engine::Scene& scene, int repeat) {
+// Median wall times of simulating `scene` with and without the helper, run alternately (in
+// alternating order) so that both see the same machine, and its event count.
+Timing timeScene(const engine::Scene& scene, int repeat, HelperTally* tally) {
   std::vector<double> both, one;
   std::size_t events = 0;
   engine::runScene(scene);  // untimed warm-up: caches and the clock frequency settle first
-  for (int i = 0; i < repeat; ++i) timePair(scene, i % 2 == 0, &both, &one, &events);
+  for (int i = 0; i < repeat; ++i) {
+    for (const bool helper : {i % 2 == 0, i % 2 != 0})
+      (helper ? both : one).push_back(timedRun(scene, helper, &events, tally));
+  }
   return {median(both), median(one), events};
 }
 
@@ -106,29 +115,44 @@ void runBenchShots(const BenchShotsFlags& flags) {
     files.push_back(f.path());
   }
   std::sort(files.begin(), files.end());
+  const bool helper_setting = engine::CushionSolveAhead::enabled();
+  HelperTally tally;
   for (const auto& f : files) {
-    const Timing t = timeScene(engine::loadScene(f.string()), flags.repeat);
+    const Timing t = timeScene(engine::loadScene(f.string()), flags.repeat, &tally);
     table << f.stem().string() << ',' << std::setprecision(4) << t.median_us << ',' << t.one_core_us
           << ',' << t.events << '\n';
   }
   const std::vector<engine::Scene> shots = randomShots(flags.random_shots);
   for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i)
     engine::runScene(shots[i]);  // untimed warm-up, as for the scenes
+  // Each shot once per pass (its first run: as a user runs it), one core first.
   std::vector<double> both, one, events;
-  for (std::size_t k = 0; k < shots.size(); ++k) {
-    std::size_t count = 0;
-    timePair(shots[k], k % 2 == 0, &both, &one, &count);
-    events.push_back(static_cast<double>(count));
-  }
   double one_core_total_s = 0;
-  for (const double us : one) one_core_total_s += us * 1e-6;
-  engine::CushionSolveAhead::setEnabled(true);
+  for (const bool helper : {false, true}) {
+    for (const engine::Scene& s : shots) {
+      std::size_t count = 0;
+      const double us = timedRun(s, helper, &count, &tally);
+      (helper ? both : one).push_back(us);
+      if (!helper) {
+        one_core_total_s += us * 1e-6;
+        events.push_back(static_cast<double>(count));
+      }
+    }
+  }
+  engine::CushionSolveAhead::setEnabled(helper_setting);
   table << "random-single-shots," << std::setprecision(4) << median(both) << ',' << median(one)
         << ',' << median(events) << '\n';
   std::cout << table.str();
   std::cout << "random single shots: " << std::setprecision(4) << shots.size() / one_core_total_s
             << " shots/s on one core (" << shots.size()
             << " shots without the helper; median events as above)\n";
+  if (engine::CushionSolveAhead::available()) {
+    std::cout << "helper: " << tally.taken_ahead << " of the " << tally.impacts
+              << " cushion and jaw impacts of the runs with it were solved ahead\n";
+  } else {
+    std::cout
+        << "helper: not available here (one core, or turned off): both columns are one core\n";
+  }
   if (csv) {
     csv->stream() << table.str();
     csv->commit();
