@@ -74,10 +74,10 @@ std::atomic<Clock::rep> g_last_shot_end{kNoShotYet};
 
 }  // namespace
 
-// The process's helper thread. Asleep until a shot wakes it; then awake (spinning) for
-// kAwakeAfterShot after it last served a shot, solving the claiming shot's queued impacts,
-// earliest contact first, while one holds it. It is never destroyed: a shot may run while the
-// program exits.
+// The process's helper thread. Asleep until a shot wakes it; then awake (spinning) until
+// kAwakeAfterShot after the later of the last shot it served and the last wake-up, solving the
+// claiming shot's queued impacts, earliest contact first, while one holds it. It is never
+// destroyed: a shot may run while the program exits.
 class CushionSolveAhead::Helper {
  public:
   static constexpr int kJobCount = 64;  // impacts in flight; with all taken the loop solves
@@ -96,7 +96,7 @@ class CushionSolveAhead::Helper {
       Helper* helper = new Helper;
       instance_.store(helper, std::memory_order_release);
       return helper;
-    } catch (const std::system_error&) {
+    } catch (...) {  // no thread (or no memory for it): shots run without the helper
       start_failed = true;
       return nullptr;
     }
@@ -149,6 +149,9 @@ class CushionSolveAhead::Helper {
 
   // Keeps the helper awake for kAwakeAfterShot from now (waking it if it sleeps).
   void wake() {
+    awake_until_.store((Clock::now() + kAwakeAfterShot).time_since_epoch().count(),
+                       std::memory_order_relaxed);
+    waker_core_.store(sched_getcpu(), std::memory_order_relaxed);
     {
       std::lock_guard<std::mutex> lock(mutex_);
       wake_requested_ = true;
@@ -208,42 +211,64 @@ class CushionSolveAhead::Helper {
   Helper() : thread_([this] { run(); }) { thread_.detach(); }
 
   void run() {
+    const bool have_mask = sched_getaffinity(0, sizeof own_cores_, &own_cores_) == 0;
+    std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
-      {
-        std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return wake_requested_; });
-        wake_requested_ = false;
-      }
+      wake_.wait(lock, [&] { return wake_requested_; });
+      wake_requested_ = false;
+      lock.unlock();
       awake_.store(true, std::memory_order_seq_cst);
-      auto last_served = Clock::now();
-      for (long turn = 0;; ++turn) {
-        if (turn % kCpuCheckTurns == 0) core_.store(sched_getcpu(), std::memory_order_relaxed);
-        if (serving_.load(std::memory_order_acquire)) {
-          if (!solveOne(true)) spinPause();
-          last_served = Clock::now();
-          continue;
-        }
-        if (Clock::now() - last_served < kAwakeAfterShot) {
-          spinPause();
-          continue;
-        }
-        if (wakeRequested()) {  // asked to stay awake for the next shot
-          last_served = Clock::now();
-          continue;
-        }
-        awake_.store(false, std::memory_order_seq_cst);
-        if (!serving_.load(std::memory_order_seq_cst)) break;  // asleep until woken
-        awake_.store(true, std::memory_order_seq_cst);         // a shot claimed it just now
-      }
+      serveWhileAwake(have_mask);
+      // Free to run anywhere again while it sleeps.
+      if (moved_) sched_setaffinity(0, sizeof own_cores_, &own_cores_);
+      moved_ = false;
+      lock.lock();
     }
   }
 
-  // A wake-up asked for while awake extends the awake time (consumed here).
-  bool wakeRequested() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!wake_requested_) return false;
-    wake_requested_ = false;
-    return true;
+  // Moves the helper off `core` (where the thread that woke it runs, which needs that core) to
+  // any other core of its mask: a woken thread is often placed beside its waker.
+  void moveOffCore(int core) {
+    cpu_set_t others = own_cores_;
+    CPU_CLR(core, &others);
+    if (CPU_COUNT(&others) == 0) return;
+    if (sched_setaffinity(0, sizeof others, &others) == 0) moved_ = true;
+  }
+
+  // Serves shots until kAwakeAfterShot after the last one it served and after the last wake-up,
+  // then returns with awake_ false. Where it finds itself on the core of the thread that woke it
+  // (which needs that core) it moves to another (can_move: its affinity mask is known), or else
+  // yields while idle.
+  void serveWhileAwake(bool can_move) {
+    Clock::rep served_until = 0;  // kAwakeAfterShot after the last shot served (clock ticks)
+    for (long turn = 0;; ++turn) {
+      int core = core_.load(std::memory_order_relaxed);
+      if (turn % kCpuCheckTurns == 0) {
+        core = sched_getcpu();
+        if (can_move && !moved_ && core >= 0 &&
+            core == waker_core_.load(std::memory_order_relaxed)) {
+          moveOffCore(core);
+          core = sched_getcpu();
+        }
+        core_.store(core, std::memory_order_relaxed);
+      }
+      if (serving_.load(std::memory_order_acquire)) {
+        if (!solveOne(true)) spinPause();
+        served_until = (Clock::now() + kAwakeAfterShot).time_since_epoch().count();
+        continue;
+      }
+      const Clock::rep now = Clock::now().time_since_epoch().count();
+      if (now < served_until || now < awake_until_.load(std::memory_order_relaxed)) {
+        if (core >= 0 && core == waker_core_.load(std::memory_order_relaxed))
+          std::this_thread::yield();
+        else
+          spinPause();
+        continue;
+      }
+      awake_.store(false, std::memory_order_seq_cst);
+      if (!serving_.load(std::memory_order_seq_cst)) return;  // to sleep until woken
+      awake_.store(true, std::memory_order_seq_cst);          // a shot claimed it just now
+    }
   }
 
   static std::atomic<Helper*> instance_;
@@ -252,6 +277,8 @@ class CushionSolveAhead::Helper {
   std::atomic<bool> serving_{false};              // and may queue jobs
   std::atomic<bool> awake_{false};                // spinning, not asleep
   alignas(64) std::atomic<int> core_{-1};         // where the helper last ran
+  std::atomic<int> waker_core_{-1};               // where the last wake-up came from
+  std::atomic<Clock::rep> awake_until_{0};        // awake at least until then (clock ticks)
   alignas(64) std::atomic<int> used_shared_{0};   // jobs [0, used) handed out in this shot
   int used_ = 0;                                  // the same, the loop's copy
   SimulationParams params_;                       // the claiming shot's
@@ -260,6 +287,8 @@ class CushionSolveAhead::Helper {
   std::mutex mutex_;
   std::condition_variable wake_;
   bool wake_requested_ = false;  // under mutex_
+  cpu_set_t own_cores_;          // the helper's affinity mask when it started (helper only)
+  bool moved_ = false;           // moved off its waker's core (helper only)
   std::thread thread_;           // last: starts once the members above exist
 };
 
@@ -286,11 +315,13 @@ CushionSolveAhead::~CushionSolveAhead() {
     helper_->release();  // awake for kAwakeAfterShot from its last job
   } else if (claim_tried_ && enabled() && twoCores()) {
     // A shot that could have used the helper, run back to back with the last one: keep (or get)
-    // it awake for the next.
+    // it awake for the next (it moves off this thread's core if it wakes there).
     const Clock::rep last = g_last_shot_end.load(std::memory_order_relaxed);
-    const Clock::rep gap = started_.time_since_epoch().count() - last;
-    if (last != kNoShotYet &&
-        gap < std::chrono::duration_cast<Clock::duration>(kAwakeAfterShot).count()) {
+    const bool back_to_back =
+        last != kNoShotYet &&
+        started_.time_since_epoch().count() - last <
+            std::chrono::duration_cast<Clock::duration>(kAwakeAfterShot).count();
+    if (back_to_back) {
       if (Helper* helper = Helper::startOrGet()) helper->wake();
     }
   }

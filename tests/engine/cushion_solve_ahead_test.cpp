@@ -323,32 +323,76 @@ TEST_F(HandOver, AnotherInputIsSolvedByTheLoop) {
 TEST_F(HandOver, AnImpactTheModelRefusesFailsInTheLoopWithTheModelsError) {
   physics::BallVelocity away = incoming(1);
   away.v.y() = -away.v.y();  // moving away from the cushion: the model refuses it
-  std::string helper_message, loop_message;
-  try {
-    handOver(away, away);
-  } catch (const std::invalid_argument& e) {
-    helper_message = e.what();
-  }
+  std::string loop_message;
   try {
     resolveCushionContact(params_, away);
   } catch (const std::invalid_argument& e) {
     loop_message = e.what();
   }
-  EXPECT_FALSE(loop_message.empty());
-  EXPECT_EQ(helper_message, loop_message);
+  ASSERT_FALSE(loop_message.empty());
+  // Handed over (the helper's solve fails), then resolved: the model's own error, every time.
+  bool held = false;
+  const auto start = std::chrono::steady_clock::now();
+  do {
+    CushionSolveAhead::wakeHelper();
+    const long served = CushionSolveAhead::shotsServed();
+    CushionSolveAhead ahead(params_, 1);
+    ahead.predict(0, 1.0, away);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    std::string message;
+    try {
+      ahead.resolve(0, away);
+    } catch (const std::invalid_argument& e) {
+      message = e.what();
+    }
+    EXPECT_EQ(message, loop_message);
+    held = CushionSolveAhead::shotsServed() > served;
+  } while (!held && CushionSolveAhead::available() &&
+           std::chrono::steady_clock::now() - start < kPatience);
+  EXPECT_EQ(held, CushionSolveAhead::available());
 }
 
 TEST_F(HandOver, MorePredictionsThanJobsAreSolvedByTheLoop) {
   constexpr int kBalls = 150;  // more than the helper's jobs
-  CushionSolveAhead::wakeHelper();
-  std::this_thread::sleep_for(std::chrono::microseconds(200));
-  CushionSolveAhead ahead(params_, kBalls);
-  for (int k = 0; k < kBalls; ++k) ahead.predict(k, 1.0 + k, incoming(k));
-  for (int k = 0; k < kBalls; ++k) {
-    EXPECT_TRUE(
-        sameBits(ahead.resolve(k, incoming(k)), resolveCushionContact(params_, incoming(k))))
-        << "ball " << k;
+  bool held = false;
+  const auto start = std::chrono::steady_clock::now();
+  do {
+    CushionSolveAhead::wakeHelper();
+    const long served = CushionSolveAhead::shotsServed();
+    CushionSolveAhead ahead(params_, kBalls);
+    for (int k = 0; k < kBalls; ++k) ahead.predict(k, 1.0 + k, incoming(k));
+    for (int k = 0; k < kBalls; ++k) {
+      EXPECT_TRUE(
+          sameBits(ahead.resolve(k, incoming(k)), resolveCushionContact(params_, incoming(k))))
+          << "ball " << k;
+    }
+    held = CushionSolveAhead::shotsServed() > served;
+  } while (!held && CushionSolveAhead::available() &&
+           std::chrono::steady_clock::now() - start < kPatience);
+  EXPECT_EQ(held, CushionSolveAhead::available());
+}
+
+// When shots use the helper: run back to back (after the second, it is awake for the next), not
+// on their own (it is asleep by then, and a shot never waits for it to wake).
+TEST(CushionSolveAheadPolicy, ShotsOnTheirOwnDoNotUseTheHelperAndShotsBackToBackDo) {
+  const bool saved = CushionSolveAhead::enabled();
+  CushionSolveAhead::setEnabled(true);
+  const Scene scene = shippedScene("9-ball-break");
+  const long served_before = CushionSolveAhead::shotsServed();
+  for (int shot = 0; shot < 5; ++shot) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // ten times its awake time
+    runScene(scene);
   }
+  EXPECT_EQ(CushionSolveAhead::shotsServed(), served_before);
+  bool served = false;
+  const auto start = std::chrono::steady_clock::now();
+  while (!served && CushionSolveAhead::available() &&
+         std::chrono::steady_clock::now() - start < kPatience) {
+    for (int shot = 0; shot < 20; ++shot) runScene(scene);
+    served = CushionSolveAhead::shotsServed() > served_before;
+  }
+  EXPECT_EQ(served, CushionSolveAhead::available());
+  CushionSolveAhead::setEnabled(saved);
 }
 
 }  // namespace
