@@ -9,7 +9,6 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
-#include <system_error>
 #include <thread>
 
 #include "engine/cushion_contact.h"

@@ -8,7 +8,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -53,32 +55,22 @@ std::uint64_t resultBits(const SimulationResult& result) {
   return hash;
 }
 
-// Turns the helper on for a test (and wakes it: shots use it only while it is awake, which shots
-// run back to back keep it) and restores the setting when the test ends.
-class HelperOn {
+// Turns the helper on (and wakes it: shots use it only while it is awake, which shots run back
+// to back keep it) or off for a test, and restores the setting when the test ends.
+class HelperSetting {
  public:
-  HelperOn() : saved_(CushionSolveAhead::enabled()) {
-    CushionSolveAhead::setEnabled(true);
-    CushionSolveAhead::wakeHelper();
+  explicit HelperSetting(bool on) : saved_(CushionSolveAhead::enabled()) {
+    CushionSolveAhead::setEnabled(on);
+    if (on) CushionSolveAhead::wakeHelper();
   }
-  ~HelperOn() { CushionSolveAhead::setEnabled(saved_); }
-
- private:
-  bool saved_;
-};
-
-// The same, the helper turned off.
-class HelperOff {
- public:
-  HelperOff() : saved_(CushionSolveAhead::enabled()) { CushionSolveAhead::setEnabled(false); }
-  ~HelperOff() { CushionSolveAhead::setEnabled(saved_); }
+  ~HelperSetting() { CushionSolveAhead::setEnabled(saved_); }
 
  private:
   bool saved_;
 };
 
 std::uint64_t oneCoreBits(const Scene& scene) {
-  HelperOff off;
+  HelperSetting off(false);
   return resultBits(runScene(scene).result);
 }
 
@@ -97,6 +89,32 @@ bool runUntilAnImpactIsTakenAhead(const Scene& scene, std::uint64_t expected) {
   return CushionSolveAhead::impactsTakenAhead() > taken_before;
 }
 
+// Runs `attempt` (waking the helper first, when `wake`) once, and again while none of its shots
+// held the helper, where it can run, for at most kPatience. Whether a shot held it.
+bool repeatUntilServed(const std::function<void()>& attempt, bool wake = true) {
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    if (wake) CushionSolveAhead::wakeHelper();
+    const long served_before = CushionSolveAhead::shotsServed();
+    attempt();
+    if (CushionSolveAhead::shotsServed() > served_before) return true;
+    if (!CushionSolveAhead::available() || std::chrono::steady_clock::now() - start >= kPatience)
+      return false;
+  }
+}
+
+// Runs `scene` `runs` times with the helper on, each result `expected`; where the helper can run,
+// some impact is answered ahead (in those runs, or in more within kPatience).
+void expectTheSameBitsWithImpactsTakenAhead(const Scene& scene, std::uint64_t expected, int runs) {
+  HelperSetting on(true);
+  const long taken_before = CushionSolveAhead::impactsTakenAhead();
+  for (int run = 0; run < runs; ++run) EXPECT_EQ(resultBits(runScene(scene).result), expected);
+  if (CushionSolveAhead::available()) {
+    EXPECT_TRUE(CushionSolveAhead::impactsTakenAhead() > taken_before ||
+                runUntilAnImpactIsTakenAhead(scene, expected));
+  }
+}
+
 Scene shippedScene(const std::string& name) {
   return loadScene(assetsDirectory() + "/scenes/" + name + ".json");
 }
@@ -113,9 +131,17 @@ std::vector<Scene> manyBallScenes() {
     return lo + (hi - lo) * ((random() >> 11) * 0x1.0p-53);
   };
   // More with BAIZE_SOLVE_AHEAD_SHOTS=N (a longer check by hand).
-  const char* more = std::getenv("BAIZE_SOLVE_AHEAD_SHOTS");
-  const int variations = more ? std::atoi(more) : 60;
-  for (int k = 0; k < variations; ++k) {
+  long variations = 60;
+  if (const char* more = std::getenv("BAIZE_SOLVE_AHEAD_SHOTS")) {
+    char* end = nullptr;
+    variations = std::strtol(more, &end, 10);
+    if (*more == '\0' || *end != '\0' || variations < 0 || variations > 10000000) {
+      throw std::invalid_argument("BAIZE_SOLVE_AHEAD_SHOTS = \"" + std::string(more) +
+                                  "\" is not allowed: it must be a whole number of shots in "
+                                  "[0, 10000000]");
+    }
+  }
+  for (long k = 0; k < variations; ++k) {
     Scene s = shippedScene(k % 3 == 0   ? "9-ball-break"
                            : k % 3 == 1 ? "8-ball-break"
                                         : "snooker-break-off");
@@ -133,7 +159,7 @@ TEST(CushionSolveAhead, ResultsAreTheSameBitForBitWithAndWithoutTheHelper) {
   const std::vector<Scene> scenes = manyBallScenes();
   std::vector<std::uint64_t> alone;
   for (const Scene& scene : scenes) alone.push_back(oneCoreBits(scene));
-  HelperOn on;
+  HelperSetting on(true);
   const long taken_before = CushionSolveAhead::impactsTakenAhead();
   for (int run = 0; run < 2; ++run) {  // the helper's share differs from run to run
     for (std::size_t k = 0; k < scenes.size(); ++k) {
@@ -157,15 +183,7 @@ TEST(CushionSolveAhead, TheHelperSolvesInTheCallersRoundingMode) {
   const int saved = std::fegetround();
   ASSERT_EQ(std::fesetround(FE_UPWARD), 0);
   const std::uint64_t alone = oneCoreBits(scene);
-  {
-    HelperOn on;
-    const long taken_before = CushionSolveAhead::impactsTakenAhead();
-    for (int run = 0; run < 20; ++run) EXPECT_EQ(resultBits(runScene(scene).result), alone);
-    if (CushionSolveAhead::available()) {
-      EXPECT_TRUE(CushionSolveAhead::impactsTakenAhead() > taken_before ||
-                  runUntilAnImpactIsTakenAhead(scene, alone));
-    }
-  }
+  expectTheSameBitsWithImpactsTakenAhead(scene, alone, 20);
   std::fesetround(saved);
   EXPECT_NE(alone, oneCoreBits(scene));  // the rounding mode mattered
 }
@@ -174,19 +192,12 @@ TEST(CushionSolveAhead, TheSeedPaperSchemeIsSolvedAheadToTheSameBits) {
   Scene scene = shippedScene("9-ball-break");
   scene.overrides.cushion_model = CushionModelChoice::SeedPaper;
   scene.overrides.paper_steps = 500;
-  const std::uint64_t alone = oneCoreBits(scene);
-  HelperOn on;
-  const long taken_before = CushionSolveAhead::impactsTakenAhead();
-  for (int run = 0; run < 10; ++run) EXPECT_EQ(resultBits(runScene(scene).result), alone);
-  if (CushionSolveAhead::available()) {
-    EXPECT_TRUE(CushionSolveAhead::impactsTakenAhead() > taken_before ||
-                runUntilAnImpactIsTakenAhead(scene, alone));
-  }
+  expectTheSameBitsWithImpactsTakenAhead(scene, oneCoreBits(scene), 10);
 }
 
 TEST(CushionSolveAhead, TurnedOffItIsNeverUsed) {
   const Scene scene = shippedScene("9-ball-break");
-  HelperOff off;
+  HelperSetting off(false);
   const long served = CushionSolveAhead::shotsServed(),
              taken = CushionSolveAhead::impactsTakenAhead();
   for (int run = 0; run < 10; ++run) runScene(scene);
@@ -201,17 +212,11 @@ TEST(CushionSolveAhead, ShotsOnSeveralThreadsAtOnceGiveTheOneCoreResults) {
   const std::vector<Scene> scenes = manyBallScenes();
   std::vector<std::uint64_t> expected;
   for (const Scene& scene : scenes) expected.push_back(oneCoreBits(scene));
-  HelperOn on;
+  HelperSetting on(true);
   constexpr int kThreads = 3;
   std::vector<int> mismatches(kThreads, 0);
-  // Again while the helper served none of them (the machine may be busy), within kPatience.
-  bool served = false;
-  const auto start = std::chrono::steady_clock::now();
-  for (int round = 0; round == 0 || (!served && CushionSolveAhead::available() &&
-                                     std::chrono::steady_clock::now() - start < kPatience);
-       ++round) {
-    CushionSolveAhead::wakeHelper();
-    const long served_before = CushionSolveAhead::shotsServed();
+  // Again while the helper served none of them (the machine may be busy).
+  const bool served = repeatUntilServed([&] {
     std::vector<std::thread> threads;
     for (int t = 0; t < kThreads; ++t) {
       threads.emplace_back([&, t] {
@@ -222,8 +227,7 @@ TEST(CushionSolveAhead, ShotsOnSeveralThreadsAtOnceGiveTheOneCoreResults) {
       });
     }
     for (std::thread& thread : threads) thread.join();
-    served = CushionSolveAhead::shotsServed() > served_before;
-  }
+  });
   for (int t = 0; t < kThreads; ++t) EXPECT_EQ(mismatches[t], 0) << "thread " << t;
   EXPECT_EQ(served, CushionSolveAhead::available());
 }
@@ -234,18 +238,11 @@ TEST(CushionSolveAhead, AFailedShotReleasesTheHelper) {
   failing.overrides.max_events = 40;
   const Scene scene = shippedScene("9-ball-break");
   const std::uint64_t alone = oneCoreBits(scene);
-  HelperOn on;
+  HelperSetting on(true);
   // Until the failing shot held the helper (it may find the helper busy, asleep or on its own
   // core while other programs use the machine).
-  bool failing_shot_held_it = false;
-  const auto start = std::chrono::steady_clock::now();
-  while (!failing_shot_held_it && CushionSolveAhead::available() &&
-         std::chrono::steady_clock::now() - start < kPatience) {
-    CushionSolveAhead::wakeHelper();
-    const long served_before = CushionSolveAhead::shotsServed();
-    EXPECT_THROW(runScene(failing), std::runtime_error);
-    failing_shot_held_it = CushionSolveAhead::shotsServed() > served_before;
-  }
+  const bool failing_shot_held_it =
+      repeatUntilServed([&] { EXPECT_THROW(runScene(failing), std::runtime_error); });
   for (int run = 0; run < 10; ++run) EXPECT_EQ(resultBits(runScene(scene).result), alone);
   if (CushionSolveAhead::available()) {
     EXPECT_TRUE(failing_shot_held_it);
@@ -272,21 +269,17 @@ class HandOver : public ::testing::Test {
   // (within kPatience) until the helper held the shot. Returns the answer and whether it held it.
   std::pair<physics::BallVelocity, bool> handOver(const physics::BallVelocity& predicted,
                                                   const physics::BallVelocity& actual) {
-    const auto start = std::chrono::steady_clock::now();
-    while (std::chrono::steady_clock::now() - start < kPatience) {
-      CushionSolveAhead::wakeHelper();
+    physics::BallVelocity answer;
+    const bool held = repeatUntilServed([&] {
       std::this_thread::sleep_for(std::chrono::microseconds(200));
-      const long served = CushionSolveAhead::shotsServed();
       CushionSolveAhead ahead(params_, 1);
       ahead.predict(0, 1.0, predicted);
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
-      const physics::BallVelocity answer = ahead.resolve(0, actual);
-      if (CushionSolveAhead::shotsServed() > served || !CushionSolveAhead::available())
-        return {answer, CushionSolveAhead::shotsServed() > served};
-    }
-    return {resolveCushionContact(params_, actual), false};
+      answer = ahead.resolve(0, actual);
+    });
+    return {answer, held};
   }
-  HelperOn on_;
+  HelperSetting on_{true};
   SimulationParams params_ = poolSimulationParams();
 };
 
@@ -331,11 +324,7 @@ TEST_F(HandOver, AnImpactTheModelRefusesFailsInTheLoopWithTheModelsError) {
   }
   ASSERT_FALSE(loop_message.empty());
   // Handed over (the helper's solve fails), then resolved: the model's own error, every time.
-  bool held = false;
-  const auto start = std::chrono::steady_clock::now();
-  do {
-    CushionSolveAhead::wakeHelper();
-    const long served = CushionSolveAhead::shotsServed();
+  const bool held = repeatUntilServed([&] {
     CushionSolveAhead ahead(params_, 1);
     ahead.predict(0, 1.0, away);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -346,19 +335,13 @@ TEST_F(HandOver, AnImpactTheModelRefusesFailsInTheLoopWithTheModelsError) {
       message = e.what();
     }
     EXPECT_EQ(message, loop_message);
-    held = CushionSolveAhead::shotsServed() > served;
-  } while (!held && CushionSolveAhead::available() &&
-           std::chrono::steady_clock::now() - start < kPatience);
+  });
   EXPECT_EQ(held, CushionSolveAhead::available());
 }
 
 TEST_F(HandOver, MorePredictionsThanJobsAreSolvedByTheLoop) {
   constexpr int kBalls = 150;  // more than the helper's jobs
-  bool held = false;
-  const auto start = std::chrono::steady_clock::now();
-  do {
-    CushionSolveAhead::wakeHelper();
-    const long served = CushionSolveAhead::shotsServed();
+  const bool held = repeatUntilServed([&] {
     CushionSolveAhead ahead(params_, kBalls);
     for (int k = 0; k < kBalls; ++k) ahead.predict(k, 1.0 + k, incoming(k));
     for (int k = 0; k < kBalls; ++k) {
@@ -366,9 +349,7 @@ TEST_F(HandOver, MorePredictionsThanJobsAreSolvedByTheLoop) {
           sameBits(ahead.resolve(k, incoming(k)), resolveCushionContact(params_, incoming(k))))
           << "ball " << k;
     }
-    held = CushionSolveAhead::shotsServed() > served;
-  } while (!held && CushionSolveAhead::available() &&
-           std::chrono::steady_clock::now() - start < kPatience);
+  });
   EXPECT_EQ(held, CushionSolveAhead::available());
 }
 
@@ -384,13 +365,11 @@ TEST(CushionSolveAheadPolicy, ShotsOnTheirOwnDoNotUseTheHelperAndShotsBackToBack
     runScene(scene);
   }
   EXPECT_EQ(CushionSolveAhead::shotsServed(), served_before);
-  bool served = false;
-  const auto start = std::chrono::steady_clock::now();
-  while (!served && CushionSolveAhead::available() &&
-         std::chrono::steady_clock::now() - start < kPatience) {
-    for (int shot = 0; shot < 20; ++shot) runScene(scene);
-    served = CushionSolveAhead::shotsServed() > served_before;
-  }
+  const bool served = repeatUntilServed(
+      [&] {
+        for (int shot = 0; shot < 20; ++shot) runScene(scene);
+      },
+      /*wake=*/false);
   EXPECT_EQ(served, CushionSolveAhead::available());
   CushionSolveAhead::setEnabled(saved);
 }
