@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # baize bench accuracy on a tiny configuration (the first two shots of the set, one timed run):
 # the CSV has the documented columns and every configuration, the event loop scores 0 against
-# itself, and the fixed-step integrator's error falls as its step shrinks.
+# itself, and the fixed-step integrator's error falls as its step shrinks; on three shots the event
+# loop's error grows with its cushion tolerance.
 # Usage: bench_accuracy_cli_test.sh path/to/baize
 set -euo pipefail
 baize=$1
@@ -24,6 +25,7 @@ assert rows and list(rows[0].keys()) == [
 assert all(r["shots"] == "all" for r in rows), rows
 configs = [(r["engine"], r["setting"]) for r in rows]
 assert configs == [("event", "exact"),
+                   ("event", "tol=1e-10"), ("event", "tol=1e-08"), ("event", "tol=1e-06"),
                    ("fixed-step", "dt=10ms"), ("fixed-step", "dt=1ms"),
                    ("fixed-step", "dt=100us"), ("fixed-step", "dt=10us"),
                    ("box2d", "dt=1/60s"), ("box2d", "dt=1/240s"), ("box2d", "dt=1ms"),
@@ -40,6 +42,20 @@ fixed = [float(r["position_error_m"]) for r in rows if r["engine"] == "fixed-ste
 for coarse, fine in zip(fixed, fixed[1:]):
     assert fine < coarse, fixed
 assert fixed[0] > 10 * fixed[2], fixed
+PY
+
+# The event loop with looser cushion tolerances, on the first three shots (the third, heavy sidespin,
+# meets cushions): its error against the default grows with the tolerance and stays small.
+"$baize" bench accuracy --shots 3 --repeats 1 --csv "$work/tolerances.csv" >/dev/null ||
+  fail "bench accuracy --shots 3 exited $?"
+python3 - "$work/tolerances.csv" <<'PY'
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["engine"] == "event"]
+assert [r["setting"] for r in rows] == ["exact", "tol=1e-10", "tol=1e-08", "tol=1e-06"], rows
+errors = [float(r["position_error_m"]) for r in rows]
+assert errors[0] == 0, errors
+assert 0 < errors[1] <= errors[2] <= errors[3] < 1e-3, errors
+assert all(float(r["outcome_mismatch"]) == 0 for r in rows), rows
 PY
 
 # Bad flags: exit 2 with the flag named; nothing written.

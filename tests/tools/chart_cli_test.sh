@@ -205,8 +205,9 @@ head -2 "$work/accuracy.csv" >"$work/event-only.csv"
 count_palette_colours 1 "$work/event-only.png"
 # A negative error is refused with the file, line and column; nothing is written.
 sed 's/^fixed-step,dt=1ms,\([^,]*\),[^,]*,/fixed-step,dt=1ms,\1,-0.5,/' "$work/accuracy.csv" >"$work/negative.csv"
-grep -q ',-0.5,' "$work/negative.csv" || fail "test setup: no negative error written"
-expect_error 2 "$work/negative.csv line 4, column position_error_m = -0.5 is not allowed" \
+line=$(grep -n ',-0.5,' "$work/negative.csv" | cut -d: -f1)
+[[ -n "$line" ]] || fail "test setup: no negative error written"
+expect_error 2 "$work/negative.csv line $line, column position_error_m = -0.5 is not allowed" \
   chart bench-accuracy "$work/negative.csv" --png "$work/negative.png"
 [[ ! -e "$work/negative.png" && ! -e "$work/negative.png.tmp" ]] || fail "a refused accuracy chart left a file"
 expect_error 2 "no column 'engine'" chart bench-accuracy "$work/bench.csv" --png "$work/x.png"

@@ -195,4 +195,19 @@ assert [r["scene"] for r in rows] == scenes + ["random-single-shots"], [r["scene
 assert all(float(r["median_us"]) > 0 and float(r["one_core_us"]) > 0 and float(r["events"]) >= 1
            for r in rows)
 PY
+# --cushion-tolerance: the runs use it and say so; a value outside the solver's range is refused
+# (exit 2, the flag named, nothing written).
+out=$("$baize" bench shots --repeat 1 --random-shots 5 --cushion-tolerance 1e-8) ||
+  fail "bench shots --cushion-tolerance 1e-8 exited $?"
+grep -q "cushion impacts solved to tolerance 1e-08" <<<"$out" || fail "no tolerance line in: $out"
+for bad in 1e-5 0 -1 nan; do
+  set +e
+  msg=$("$baize" bench shots --repeat 1 --random-shots 5 --cushion-tolerance "$bad" \
+    --csv "$work/never.csv" 2>&1 >/dev/null)
+  status=$?
+  set -e
+  [[ $status -eq 2 ]] || fail "--cushion-tolerance $bad exited $status, expected 2"
+  grep -q -- "--cushion-tolerance" <<<"$msg" || fail "message does not name the flag: $msg"
+  [[ -e "$work/never.csv" ]] && fail "CSV written for --cushion-tolerance $bad"
+done
 echo "simulate CLI: all checks passed"

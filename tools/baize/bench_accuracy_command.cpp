@@ -35,6 +35,9 @@ constexpr std::size_t kComparedCueContacts = 3;
 // Seeded random positional shots in the set.
 constexpr int kRandomShots = 5;
 constexpr std::uint64_t kRandomSeed = 20261121;
+// The exact cushion solver's tolerances tried besides its default (3e-11), as in `baize bench
+// cushion`: per impact they allow errors up to about 1e-9, 5e-7 and 1.5e-5 V0.
+constexpr double kLooserCushionTolerances[] = {1e-10, 1e-8, 1e-6};
 
 struct BenchAccuracyFlags {
   std::string csv_path;
@@ -227,6 +230,17 @@ std::vector<Configuration> configurations() {
   std::vector<Configuration> list;
   list.push_back({"event", "exact",
                   [](const Shot& s) { return engine::simulate(s.params, s.table, s.balls); }});
+  // The event loop with the seed's cushion model solved to looser tolerances (the setting names
+  // them as `baize bench cushion` does): what accuracy of each impact buys in whole shots.
+  for (const double tolerance : kLooserCushionTolerances) {
+    std::ostringstream setting;
+    setting << "tol=" << tolerance;
+    list.push_back({"event", setting.str(), [tolerance](const Shot& s) {
+                      engine::SimulationParams params = s.params;
+                      params.cushion_solver.tolerance = tolerance;
+                      return engine::simulate(params, s.table, s.balls);
+                    }});
+  }
   const std::pair<double, const char*> fixed[] = {
       {1e-2, "dt=10ms"}, {1e-3, "dt=1ms"}, {1e-4, "dt=100us"}, {1e-5, "dt=10us"}};
   for (const auto& [dt, name] : fixed) {
@@ -358,8 +372,9 @@ void addBenchAccuracyCommand(CLI::App& parent) {
   auto flags = std::make_shared<BenchAccuracyFlags>();
   CLI::App* command = parent.add_subcommand(
       "accuracy",
-      "Run time against error for whole shots: the event loop, a fixed-step integrator of the same "
-      "physics and a Box2D baseline");
+      "Run time against error for whole shots: the event loop (its cushion impacts solved to the "
+      "default and looser tolerances), a fixed-step integrator of the same physics and a Box2D "
+      "baseline");
   command->add_option("--csv", flags->csv_path, "also write the table to this CSV file");
   command->add_option("--shots", flags->shots, "use only the first N shots of the set (0: all)")
       ->capture_default_str();

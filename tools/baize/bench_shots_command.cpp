@@ -14,6 +14,7 @@
 
 #include "engine/cushion_solve_ahead.h"
 #include "engine/scene.h"
+#include "physics/cushion_exact_solver.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/median.h"
@@ -25,6 +26,9 @@ struct BenchShotsFlags {
   std::string csv_path;
   int repeat = 21;          // timed runs per scene; the median is reported
   int random_shots = 1000;  // random single shots
+  // Given: every shot's exact cushion solver at this tolerance instead of its scene's (run time
+  // against the accuracy of each impact; `baize bench accuracy` gives the error it makes).
+  std::optional<double> cushion_tolerance;
 };
 
 // Random shots run untimed before the timed pass (as each scene runs once untimed first).
@@ -106,6 +110,20 @@ std::vector<engine::Scene> randomShots(int count) {
 void runBenchShots(const BenchShotsFlags& flags) {
   if (flags.repeat < 1) rejectFlag("--repeat", flags.repeat, "it must be >= 1");
   if (flags.random_shots < 1) rejectFlag("--random-shots", flags.random_shots, "it must be >= 1");
+  if (flags.cushion_tolerance) {
+    physics::ExactSolverOptions options;
+    options.tolerance = *flags.cushion_tolerance;
+    try {
+      physics::validateExactSolverOptions(options);
+    } catch (const std::invalid_argument& refused) {
+      throw UsageError(std::string(refused.what()) + " (set by --cushion-tolerance)");
+    }
+  }
+  // The scenes and random shots, with the tolerance asked for.
+  const auto withTolerance = [&](engine::Scene scene) {
+    if (flags.cushion_tolerance) scene.overrides.cushion_tolerance = flags.cushion_tolerance;
+    return scene;
+  };
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
   std::ostringstream table;
@@ -118,11 +136,12 @@ void runBenchShots(const BenchShotsFlags& flags) {
   const bool helper_setting = engine::CushionSolveAhead::enabled();
   HelperTally tally;
   for (const auto& f : files) {
-    const Timing t = timeScene(engine::loadScene(f.string()), flags.repeat, &tally);
+    const Timing t = timeScene(withTolerance(engine::loadScene(f.string())), flags.repeat, &tally);
     table << f.stem().string() << ',' << std::setprecision(4) << t.median_us << ',' << t.one_core_us
           << ',' << t.events << '\n';
   }
-  const std::vector<engine::Scene> shots = randomShots(flags.random_shots);
+  std::vector<engine::Scene> shots = randomShots(flags.random_shots);
+  std::transform(shots.begin(), shots.end(), shots.begin(), withTolerance);
   for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i)
     engine::runScene(shots[i]);  // untimed warm-up, as for the scenes
   // Each shot once per pass (its first run: as a user runs it), one core first.
@@ -146,6 +165,11 @@ void runBenchShots(const BenchShotsFlags& flags) {
   std::cout << "random single shots: " << std::setprecision(4) << shots.size() / one_core_total_s
             << " shots/s on one core (" << shots.size()
             << " shots without the helper; median events as above)\n";
+  if (flags.cushion_tolerance) {
+    std::cout << "cushion impacts solved to tolerance " << *flags.cushion_tolerance
+              << " (the exact solver's default: " << physics::ExactSolverOptions{}.tolerance
+              << ")\n";
+  }
   if (engine::CushionSolveAhead::available()) {
     std::cout << "helper: " << tally.taken_ahead << " of the " << tally.impacts
               << " cushion and jaw impacts of the runs with it were solved ahead\n";
@@ -171,6 +195,9 @@ void addBenchShotsCommand(CLI::App& parent) {
       ->capture_default_str();
   command->add_option("--random-shots", flags->random_shots, "random single shots")
       ->capture_default_str();
+  command->add_option("--cushion-tolerance", flags->cushion_tolerance,
+                      "solve every cushion impact with the exact solver at this tolerance, in "
+                      "[1e-14, 1e-6] (default: each scene's own)");
   command->callback([flags] {
     if (const int status = runReportingErrors("bench shots", [&] { runBenchShots(*flags); })) {
       throw CLI::RuntimeError(status);
