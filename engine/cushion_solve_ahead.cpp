@@ -9,8 +9,10 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <thread>
 
+#include "engine/cpu_quota.h"
 #include "engine/cushion_contact.h"
 #include "engine/shot_simulator.h"
 
@@ -54,13 +56,17 @@ void spinPause() {
 #endif
 }
 
-// The cores in the affinity mask of the thread that first asks (the machine's count if unknown),
-// read once.
+// Whether this process may use two cores, read once: two or more in the affinity mask of the
+// thread that first asks (the machine's count if unknown), and a cgroup CPU limit, if any, of two
+// cores or more (under a smaller one the helper's spinning would spend the loop's CPU time).
 bool twoCores() {
   static const bool two = [] {
     cpu_set_t set;
-    if (sched_getaffinity(0, sizeof set, &set) == 0) return CPU_COUNT(&set) >= 2;
-    return std::thread::hardware_concurrency() >= 2;
+    const bool two_in_mask = sched_getaffinity(0, sizeof set, &set) == 0
+                                 ? CPU_COUNT(&set) >= 2
+                                 : std::thread::hardware_concurrency() >= 2;
+    const std::optional<double> limit = cgroupCpuLimitCores();
+    return two_in_mask && (!limit || *limit >= 2);
   }();
   return two;
 }

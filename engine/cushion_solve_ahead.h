@@ -32,7 +32,8 @@ class CushionSolveAhead {
   static void setEnabled(bool enabled);
   static bool enabled();
   // Whether the helper can run here at all: enabled, two or more cores in the calling thread's
-  // affinity mask (read once), and its thread started (or startable).
+  // affinity mask and a cgroup CPU limit, if any, of two cores or more (read once), and its thread
+  // started (or startable).
   static bool available();
   // Starts or wakes the helper and returns once it is awake (or after 0.1 s): shots in the next
   // kAwakeAfterShot find it awake (tests).

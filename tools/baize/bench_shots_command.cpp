@@ -175,7 +175,8 @@ void runBenchShots(const BenchShotsFlags& flags) {
               << " cushion and jaw impacts of the runs with it were solved ahead\n";
   } else {
     std::cout
-        << "helper: not available here (one core, or turned off): both columns are one core\n";
+        << "helper: not available here (one core, a CPU limit below two cores, or turned off): "
+           "both columns are one core\n";
   }
   if (csv) {
     csv->stream() << table.str();

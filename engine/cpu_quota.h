@@ -1,0 +1,24 @@
+// The CPU time a Linux control group (cgroup) lets this process use, in cores: a container started
+// with a CPU limit (docker --cpus=1) sees every core of its machine in its affinity mask, but may
+// use only the limit's worth of CPU time, and a thread that spins on a second core spends the
+// first's share. The helper that solves cushion impacts ahead (cushion_solve_ahead.h) runs only
+// where two cores' worth is allowed.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace baize::engine {
+
+// The CPU limit of this process's cgroup and of every cgroup above it (the smallest), in cores;
+// empty when none limits it or none can be read (not Linux, no cgroup file system mounted).
+std::optional<double> cgroupCpuLimitCores();
+
+// The same from the files' contents, for tests: `mountinfo` as /proc/self/mountinfo, `cgroup` as
+// /proc/self/cgroup, and `read` returning a file's contents (empty if it cannot be read).
+std::optional<double> cgroupCpuLimitCores(
+    const std::string& mountinfo, const std::string& cgroup,
+    const std::function<std::optional<std::string>(const std::string& path)>& read);
+
+}  // namespace baize::engine
