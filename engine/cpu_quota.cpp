@@ -18,9 +18,8 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 // A whole non-negative number, or empty ("max", "-1", anything else).
 std::optional<double> count(const std::string& text) {
-  if (text.empty() || !std::all_of(text.begin(), text.end(), [](char c) {
-        return c >= '0' && c <= '9';
-      })) {
+  if (text.empty() ||
+      !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) {
     return std::nullopt;
   }
   return std::stod(text);
@@ -45,23 +44,48 @@ struct Mount {
   std::string point, root;
 };
 
-// The cgroup v2 mount (fstype cgroup2) or the v1 mount that carries the cpu controller.
-std::optional<Mount> findMount(const std::string& mountinfo, bool version2) {
+// A mountinfo path field with the kernel's escapes (\040 for a space, \011, \012, \134) decoded.
+std::string decodedField(const std::string& field) {
+  std::string decoded;
+  for (std::size_t i = 0; i < field.size(); ++i) {
+    const bool escape = field[i] == '\\' && i + 3 < field.size() &&
+                        std::all_of(field.begin() + i + 1, field.begin() + i + 4,
+                                    [](char c) { return c >= '0' && c <= '7'; });
+    if (escape) {
+      decoded += static_cast<char>(std::stoi(field.substr(i + 1, 3), nullptr, 8));
+      i += 3;
+    } else {
+      decoded += field[i];
+    }
+  }
+  return decoded;
+}
+
+// The cgroup v2 mounts (fstype cgroup2) or the v1 mounts that carry the cpu controller.
+std::vector<Mount> findMounts(const std::string& mountinfo, bool version2) {
+  std::vector<Mount> mounts;
   for (const std::string& line : split(mountinfo, '\n')) {
     // "id parent major:minor root point options [optional fields] - fstype source superoptions"
     const std::vector<std::string> fields = split(line, ' ');
     const auto dash = std::find(fields.begin(), fields.end(), "-");
     if (fields.size() < 5 || dash == fields.end() || fields.end() - dash < 4) continue;
     const std::string& type = *(dash + 1);
-    const bool matches =
-        version2 ? type == "cgroup2"
-                 : type == "cgroup" && [&] {
-                     const std::vector<std::string> options = split(*(dash + 3), ',');
-                     return std::find(options.begin(), options.end(), "cpu") != options.end();
-                   }();
-    if (matches) return Mount{fields[4], fields[3]};
+    const bool matches = version2 ? type == "cgroup2" : type == "cgroup" && [&] {
+      const std::vector<std::string> options = split(*(dash + 3), ',');
+      return std::find(options.begin(), options.end(), "cpu") != options.end();
+    }();
+    if (matches) mounts.push_back({decodedField(fields[4]), decodedField(fields[3])});
   }
-  return std::nullopt;
+  return mounts;
+}
+
+// The part of cgroup `path` below `root` ("" for the root itself), or empty when it is not inside.
+std::optional<std::string> below(const std::string& path, const std::string& root) {
+  if (root == "/") return path == "/" ? std::string() : path;
+  const bool inside = path.compare(0, root.size(), root) == 0 &&
+                      (path.size() == root.size() || path[root.size()] == '/');
+  if (!inside) return std::nullopt;
+  return path.substr(root.size());
 }
 
 // This process's cgroup in the hierarchy: the v2 line "0::PATH", or the v1 line whose controllers
@@ -79,20 +103,12 @@ std::optional<std::string> cgroupPath(const std::string& cgroup, bool version2) 
   return std::nullopt;
 }
 
-// The smallest limit from the cgroup's directory up to the mount point.
+// The smallest limit from the directory `relative` below the mount point up to the mount point.
 std::optional<double> smallestLimit(
-    const Mount& mount, const std::string& path, bool version2,
+    const Mount& mount, const std::string& relative, bool version2,
     const std::function<std::optional<std::string>(const std::string&)>& read) {
-  // The part of the path below the mount's root (the whole path when the root is "/").
-  std::string below = path;
-  if (mount.root != "/") {
-    const bool inside = path.compare(0, mount.root.size(), mount.root) == 0 &&
-                        (path.size() == mount.root.size() || path[mount.root.size()] == '/');
-    if (!inside) return std::nullopt;
-    below = path.substr(mount.root.size());
-  }
   std::optional<double> smallest;
-  std::string directory = mount.point + below;
+  std::string directory = mount.point + relative;
   while (true) {
     while (directory.size() > 1 && directory.back() == '/') directory.pop_back();
     std::optional<double> limit;
@@ -116,6 +132,28 @@ std::optional<double> smallestLimit(
   return smallest;
 }
 
+// The limit one hierarchy sets: read through the mount whose root holds the process's cgroup most
+// closely (the longest root that contains it); if none holds it (a namespace that names cgroups
+// from elsewhere), the first mount's own directory, which a container's limit is set on.
+std::optional<double> hierarchyLimit(
+    const std::string& mountinfo, const std::string& cgroup, bool version2,
+    const std::function<std::optional<std::string>(const std::string&)>& read) {
+  const std::vector<Mount> mounts = findMounts(mountinfo, version2);
+  const std::optional<std::string> path = cgroupPath(cgroup, version2);
+  if (mounts.empty() || !path) return std::nullopt;
+  const Mount* best = nullptr;
+  std::string relative;
+  for (const Mount& mount : mounts) {
+    const std::optional<std::string> inside = below(*path, mount.root);
+    if (inside && (!best || mount.root.size() > best->root.size())) {
+      best = &mount;
+      relative = *inside;
+    }
+  }
+  if (!best) return smallestLimit(mounts.front(), "", version2, read);
+  return smallestLimit(*best, relative, version2, read);
+}
+
 std::optional<std::string> readFile(const std::string& path) {
   std::ifstream in(path);
   if (!in) return std::nullopt;
@@ -131,10 +169,7 @@ std::optional<double> cgroupCpuLimitCores(
     const std::function<std::optional<std::string>(const std::string& path)>& read) {
   std::optional<double> smallest;
   for (const bool version2 : {false, true}) {
-    const std::optional<Mount> mount = findMount(mountinfo, version2);
-    const std::optional<std::string> path = cgroupPath(cgroup, version2);
-    if (!mount || !path) continue;
-    if (const std::optional<double> limit = smallestLimit(*mount, *path, version2, read))
+    if (const std::optional<double> limit = hierarchyLimit(mountinfo, cgroup, version2, read))
       smallest = smallest ? std::min(*smallest, *limit) : *limit;
   }
   return smallest;
@@ -145,6 +180,10 @@ std::optional<double> cgroupCpuLimitCores() {
   const std::optional<std::string> cgroup = readFile("/proc/self/cgroup");
   if (!mountinfo || !cgroup) return std::nullopt;
   return cgroupCpuLimitCores(*mountinfo, *cgroup, readFile);
+}
+
+bool twoCoresAllowed(int cores_in_affinity_mask, std::optional<double> cgroup_limit_cores) {
+  return cores_in_affinity_mask >= 2 && (!cgroup_limit_cores || *cgroup_limit_cores >= 2);
 }
 
 }  // namespace baize::engine

@@ -11,8 +11,10 @@
 
 namespace baize::engine {
 
-// The CPU limit of this process's cgroup and of every cgroup above it (the smallest), in cores;
-// empty when none limits it or none can be read (not Linux, no cgroup file system mounted).
+// The CPU limit of this process's cgroup and of the cgroups above it as far as the cgroup mount
+// shows them (the smallest), in cores, from the cgroup v1 cpu controller and cgroup v2 (the
+// smaller); empty when none limits it or none can be read (not Linux, no cgroup file system
+// mounted). A limit set above a container's cgroup namespace is not visible from inside it.
 std::optional<double> cgroupCpuLimitCores();
 
 // The same from the files' contents, for tests: `mountinfo` as /proc/self/mountinfo, `cgroup` as
@@ -20,5 +22,10 @@ std::optional<double> cgroupCpuLimitCores();
 std::optional<double> cgroupCpuLimitCores(
     const std::string& mountinfo, const std::string& cgroup,
     const std::function<std::optional<std::string>(const std::string& path)>& read);
+
+// Whether a helper thread may run beside the caller: two or more cores in its affinity mask, and a
+// cgroup CPU limit, if any, of two cores or more (under a smaller one the helper's spinning would
+// spend the caller's CPU time).
+bool twoCoresAllowed(int cores_in_affinity_mask, std::optional<double> cgroup_limit_cores);
 
 }  // namespace baize::engine

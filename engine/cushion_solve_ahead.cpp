@@ -9,7 +9,6 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
-#include <optional>
 #include <thread>
 
 #include "engine/cpu_quota.h"
@@ -56,17 +55,15 @@ void spinPause() {
 #endif
 }
 
-// Whether this process may use two cores, read once: two or more in the affinity mask of the
-// thread that first asks (the machine's count if unknown), and a cgroup CPU limit, if any, of two
-// cores or more (under a smaller one the helper's spinning would spend the loop's CPU time).
+// Whether this process may use two cores (twoCoresAllowed), read once: the cores in the affinity
+// mask of the thread that first asks (the machine's count if unknown) and the cgroup CPU limit.
 bool twoCores() {
   static const bool two = [] {
     cpu_set_t set;
-    const bool two_in_mask = sched_getaffinity(0, sizeof set, &set) == 0
-                                 ? CPU_COUNT(&set) >= 2
-                                 : std::thread::hardware_concurrency() >= 2;
-    const std::optional<double> limit = cgroupCpuLimitCores();
-    return two_in_mask && (!limit || *limit >= 2);
+    const int in_mask = sched_getaffinity(0, sizeof set, &set) == 0
+                            ? CPU_COUNT(&set)
+                            : static_cast<int>(std::thread::hardware_concurrency());
+    return twoCoresAllowed(in_mask, cgroupCpuLimitCores());
   }();
   return two;
 }

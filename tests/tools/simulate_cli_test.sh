@@ -197,10 +197,16 @@ assert all(float(r["median_us"]) > 0 and float(r["one_core_us"]) > 0 and float(r
 PY
 # --cushion-tolerance: the runs use it and say so; a value outside the solver's range is refused
 # (exit 2, the flag named, nothing written).
-out=$("$baize" bench shots --repeat 1 --random-shots 5 --cushion-tolerance 1e-8) ||
-  fail "bench shots --cushion-tolerance 1e-8 exited $?"
+out=$("$baize" bench shots --repeat 1 --random-shots 5 --cushion-tolerance 1e-8 \
+  --csv "$work/tolerance.csv") || fail "bench shots --cushion-tolerance 1e-8 exited $?"
 grep -q "cushion impacts solved to tolerance 1e-08" <<<"$out" || fail "no tolerance line in: $out"
-for bad in 1e-5 0 -1 nan; do
+python3 - "$work/tolerance.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert list(rows[0]) == ["scene", "median_us", "one_core_us", "events", "cushion_tolerance"], rows[0]
+assert all(float(r["cushion_tolerance"]) == 1e-8 for r in rows), rows
+PY
+for bad in 1e-5 0 -1 nan ""; do
   set +e
   msg=$("$baize" bench shots --repeat 1 --random-shots 5 --cushion-tolerance "$bad" \
     --csv "$work/never.csv" 2>&1 >/dev/null)

@@ -29,6 +29,7 @@ struct BenchShotsFlags {
   // Given: every shot's exact cushion solver at this tolerance instead of its scene's (run time
   // against the accuracy of each impact; `baize bench accuracy` gives the error it makes).
   std::optional<double> cushion_tolerance;
+  CLI::Option* cushion_tolerance_flag = nullptr;
 };
 
 // Random shots run untimed before the timed pass (as each scene runs once untimed first).
@@ -110,6 +111,10 @@ std::vector<engine::Scene> randomShots(int count) {
 void runBenchShots(const BenchShotsFlags& flags) {
   if (flags.repeat < 1) rejectFlag("--repeat", flags.repeat, "it must be >= 1");
   if (flags.random_shots < 1) rejectFlag("--random-shots", flags.random_shots, "it must be >= 1");
+  if (flags.cushion_tolerance_flag->count() > 0 && !flags.cushion_tolerance) {
+    throw UsageError(
+        "--cushion-tolerance = \"\" is not allowed: it must be a number in [1e-14, 1e-6]");
+  }
   if (flags.cushion_tolerance) {
     physics::ExactSolverOptions options;
     options.tolerance = *flags.cushion_tolerance;
@@ -127,7 +132,12 @@ void runBenchShots(const BenchShotsFlags& flags) {
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
   std::ostringstream table;
-  table << "scene,median_us,one_core_us,events\n";
+  // With a tolerance asked for, each row names it (the file then tells its runs apart).
+  std::ostringstream tolerance_column;
+  if (flags.cushion_tolerance) tolerance_column << ',' << *flags.cushion_tolerance;
+  const std::string row_end = tolerance_column.str() + '\n';
+  table << "scene,median_us,one_core_us,events"
+        << (flags.cushion_tolerance ? ",cushion_tolerance" : "") << '\n';
   std::vector<std::filesystem::path> files;
   for (const auto& f : std::filesystem::directory_iterator(engine::assetsDirectory() + "/scenes")) {
     files.push_back(f.path());
@@ -138,7 +148,7 @@ void runBenchShots(const BenchShotsFlags& flags) {
   for (const auto& f : files) {
     const Timing t = timeScene(withTolerance(engine::loadScene(f.string())), flags.repeat, &tally);
     table << f.stem().string() << ',' << std::setprecision(4) << t.median_us << ',' << t.one_core_us
-          << ',' << t.events << '\n';
+          << ',' << t.events << row_end;
   }
   std::vector<engine::Scene> shots = randomShots(flags.random_shots);
   std::transform(shots.begin(), shots.end(), shots.begin(), withTolerance);
@@ -160,7 +170,7 @@ void runBenchShots(const BenchShotsFlags& flags) {
   }
   engine::CushionSolveAhead::setEnabled(helper_setting);
   table << "random-single-shots," << std::setprecision(4) << median(both) << ',' << median(one)
-        << ',' << median(events) << '\n';
+        << ',' << median(events) << row_end;
   std::cout << table.str();
   std::cout << "random single shots: " << std::setprecision(4) << shots.size() / one_core_total_s
             << " shots/s on one core (" << shots.size()
@@ -196,9 +206,10 @@ void addBenchShotsCommand(CLI::App& parent) {
       ->capture_default_str();
   command->add_option("--random-shots", flags->random_shots, "random single shots")
       ->capture_default_str();
-  command->add_option("--cushion-tolerance", flags->cushion_tolerance,
-                      "solve every cushion impact with the exact solver at this tolerance, in "
-                      "[1e-14, 1e-6] (default: each scene's own)");
+  flags->cushion_tolerance_flag =
+      command->add_option("--cushion-tolerance", flags->cushion_tolerance,
+                          "solve every cushion impact with the exact solver at this tolerance, in "
+                          "[1e-14, 1e-6] (default: each scene's own)");
   command->callback([flags] {
     if (const int status = runReportingErrors("bench shots", [&] { runBenchShots(*flags); })) {
       throw CLI::RuntimeError(status);
