@@ -8,4 +8,4 @@ add_library(baize_charts STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/line_chart.cpp)
 target_include_directories(baize_charts PUBLIC ${PROJECT_SOURCE_DIR})
 # Cairo is public: the tests decode the PNG files with it to check their pixels.
-target_link_libraries(baize_charts PUBLIC baize_physics PkgConfig::CAIRO)
+target_link_libraries(baize_charts PUBLIC baize_physics baize_whole_file PkgConfig::CAIRO)

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "physics/value_text.h"
+#include "render/whole_file.h"
 
 namespace baize::render {
 namespace {
@@ -497,20 +498,22 @@ std::string chartPngBytes(const LineChart& chart, int width_px, int height_px) {
 
 void writeChartPng(const LineChart& chart, const std::string& path, int width_px, int height_px) {
   const std::string png = chartPngBytes(chart, width_px, height_px);
-  const std::string temporary = path + ".tmp";
+  const WholeFileTarget target = wholeFileTarget(path);
+  const std::string written = target.stream ? target.path : temporaryFor(target);
   const auto fail = [&](const std::string& what) {
     const std::string reason = errno != 0 ? std::string(": ") + std::strerror(errno) : "";
-    std::remove(temporary.c_str());
+    if (!target.stream) std::remove(written.c_str());
     throw std::runtime_error("cannot write the chart '" + path + "': " + what + reason);
   };
   errno = 0;
-  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-  if (!out) fail("cannot create '" + temporary + "'");
+  std::ofstream out(written, std::ios::binary | std::ios::trunc);
+  if (!out) fail("cannot create '" + written + "'");
   out.write(png.data(), static_cast<std::streamsize>(png.size()));
   out.close();
-  if (out.fail()) fail("cannot write '" + temporary + "'");
+  if (out.fail()) fail("cannot write '" + written + "'");
   // std::rename replaces an existing file atomically on POSIX systems.
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail("cannot rename '" + temporary + "'");
+  if (!target.stream && std::rename(written.c_str(), target.path.c_str()) != 0)
+    fail("cannot rename '" + written + "'");
 }
 
 }  // namespace baize::render

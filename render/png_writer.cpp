@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "render/gl_renderer.h"
+#include "render/whole_file.h"
 
 namespace baize::render {
 namespace {
@@ -64,21 +65,22 @@ void writePng(const Image& image, const std::string& path) {
                                 std::to_string(image.rgba.size()) +
                                 " bytes cannot be written: it needs width * height * 4 bytes");
   }
-  const std::string temporary = path + ".tmp";
+  const WholeFileTarget target = wholeFileTarget(path);
+  const std::string written = target.stream ? target.path : temporaryFor(target);
   errno = 0;
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
+  std::FILE* file = std::fopen(written.c_str(), "wb");
   if (file == nullptr) {
-    throw std::runtime_error("cannot create '" + temporary + "': " + std::strerror(errno));
+    throw std::runtime_error("cannot create '" + written + "': " + std::strerror(errno));
   }
   std::string error = encode(image, file);
   if (std::fflush(file) != 0 && error.empty()) error = std::strerror(errno);
   if (std::fclose(file) != 0 && error.empty()) error = std::strerror(errno);
-  if (error.empty() && std::rename(temporary.c_str(), path.c_str()) != 0) {
-    error = std::string("cannot rename it to '") + path + "': " + std::strerror(errno);
+  if (error.empty() && !target.stream && std::rename(written.c_str(), target.path.c_str()) != 0) {
+    error = std::string("cannot rename it to '") + target.path + "': " + std::strerror(errno);
   }
   if (!error.empty()) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + temporary + "': " + error);
+    if (!target.stream) std::remove(written.c_str());
+    throw std::runtime_error("cannot write '" + written + "': " + error);
   }
 }
 

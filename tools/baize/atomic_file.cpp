@@ -3,13 +3,50 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <utility>
 
+#include "tools/baize/cli_errors.h"
+
 namespace baize::tools {
+namespace {
+
+// What an output path must be when it names a directory.
+constexpr const char* kNotADirectory = "it is a directory; an output must name a file";
+
+}  // namespace
+
+void checkOutputPath(const std::string& flag, const std::string& path) {
+  const std::filesystem::path file(path);
+  std::error_code error;
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), error);
+  render::WholeFileTarget target;
+  try {
+    target = render::wholeFileTarget(path);
+  } catch (const std::invalid_argument&) {
+    throw UsageError(flag + " = " + path + " is not allowed: " + kNotADirectory);
+  }
+  if (target.stream) return;  // written straight: nothing to create beside it
+  const std::string probe = render::temporaryFor(target);
+  std::FILE* out = std::fopen(probe.c_str(), "wb");
+  if (out == nullptr || error) {
+    if (out != nullptr) std::fclose(out);
+    throw UsageError(flag + " = " + path + " is not allowed: the file cannot be created there" +
+                     (error ? " (" + error.message() + ")" : std::string()));
+  }
+  std::fclose(out);
+  std::remove(probe.c_str());
+}
 
 AtomicFile::AtomicFile(std::string path, std::string origin)
-    : path_(std::move(path)), temporary_path_(path_ + ".tmp"), origin_(std::move(origin)) {
+    : path_(std::move(path)), origin_(std::move(origin)) {
+  try {
+    target_ = render::wholeFileTarget(path_);
+  } catch (const std::invalid_argument&) {
+    throw UsageError(origin_ + " = " + path_ + " is not allowed: " + kNotADirectory);
+  }
+  temporary_path_ = target_.stream ? target_.path : render::temporaryFor(target_);
   errno = 0;
   out_.open(temporary_path_, std::ios::out | std::ios::trunc);
   if (!out_) fail("cannot create '" + temporary_path_ + "'");
@@ -18,7 +55,7 @@ AtomicFile::AtomicFile(std::string path, std::string origin)
 AtomicFile::~AtomicFile() {
   if (committed_) return;
   out_.close();
-  std::remove(temporary_path_.c_str());
+  if (!target_.stream) std::remove(temporary_path_.c_str());
 }
 
 void AtomicFile::commit() {
@@ -28,8 +65,8 @@ void AtomicFile::commit() {
   out_.close();
   if (out_.fail()) fail("cannot close '" + temporary_path_ + "'");
   // std::rename replaces an existing file atomically on POSIX systems.
-  if (std::rename(temporary_path_.c_str(), path_.c_str()) != 0) {
-    fail("cannot rename '" + temporary_path_ + "' to '" + path_ + "'");
+  if (!target_.stream && std::rename(temporary_path_.c_str(), target_.path.c_str()) != 0) {
+    fail("cannot rename '" + temporary_path_ + "' to '" + target_.path + "'");
   }
   committed_ = true;
 }

@@ -1,17 +1,27 @@
 // A text file that appears complete or not at all: the content goes to "<path>.tmp", which is
 // renamed to <path> by commit(). The temporary is created by the constructor, so an unwritable path
-// fails before any work is done, and it is removed again if commit() is never reached.
+// fails before any work is done, and it is removed again if commit() is never reached. As for every
+// output (render/whole_file.h), a symbolic link is followed and a device or FIFO is written
+// straight.
 #pragma once
 
 #include <fstream>
 #include <string>
 
+#include "render/whole_file.h"
+
 namespace baize::tools {
+
+// Checks before any work that an output the writers of render/ will write whole can be written at
+// `path`: makes its parent folders, refuses a directory, and creates (and removes) the temporary
+// of a file. Throws UsageError naming `flag` and the path.
+void checkOutputPath(const std::string& flag, const std::string& path);
 
 class AtomicFile {
  public:
   // `origin` says where the path came from (e.g. "--csv"), for error messages.
-  // Throws std::runtime_error when the temporary cannot be created.
+  // Throws UsageError when the path is a directory and std::runtime_error when the temporary
+  // cannot be created.
   AtomicFile(std::string path, std::string origin);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
@@ -24,8 +34,9 @@ class AtomicFile {
  private:
   [[noreturn]] void fail(const std::string& what) const;
 
-  std::string path_;
-  std::string temporary_path_;
+  std::string path_;            // as given, for messages
+  render::WholeFileTarget target_;
+  std::string temporary_path_;  // the file written: the temporary, or the stream itself
   std::string origin_;
   std::ofstream out_;
   bool committed_ = false;

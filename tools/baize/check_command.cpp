@@ -126,7 +126,7 @@ int runCheck(const CheckFlags& flags) {
   const engine::Suite suite = engine::loadSuite(flags.suite);
   std::unique_ptr<PngPainter> painter;
   if (!flags.png_dir.empty()) {
-    checkPngPath("--png", (std::filesystem::path(flags.png_dir) / "probe.png").string());
+    checkOutputPath("--png", (std::filesystem::path(flags.png_dir) / "probe.png").string());
     painter = std::make_unique<PngPainter>();
   }
 

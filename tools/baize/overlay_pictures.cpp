@@ -47,20 +47,6 @@ void addRegion(render::Picture& picture, const engine::Scene& scene,
   }
 }
 
-void checkPngPath(const std::string& flag, const std::string& path) {
-  const std::filesystem::path file(path);
-  std::error_code error;
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), error);
-  const std::string probe = path + ".tmp";
-  std::FILE* out = std::fopen(probe.c_str(), "wb");
-  if (out == nullptr || error) {
-    if (out != nullptr) std::fclose(out);
-    throw UsageError(flag + " = " + path + " is not allowed: the file cannot be created there");
-  }
-  std::fclose(out);
-  std::remove(probe.c_str());
-}
-
 render::Picture shotPicture(const engine::Scene& scene, const engine::SceneRun& run,
                             double pixel_size_m) {
   render::PictureOptions options;

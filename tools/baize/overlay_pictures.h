@@ -29,11 +29,6 @@ void addRegion(render::Picture& picture, const engine::Scene& scene,
                const engine::ShotOutcome& outcome, const engine::CueBallRegion& region,
                double pixel_size_m);
 
-// Makes the parent folders of `path` and checks that the file can be created there (a probe,
-// removed at once), so that a bad path fails before any simulation; throws UsageError naming the
-// flag otherwise.
-void checkPngPath(const std::string& flag, const std::string& path);
-
 // A picture of the scene's shot as `baize render` draws it (top view).
 render::Picture shotPicture(const engine::Scene& scene, const engine::SceneRun& run,
                             double pixel_size_m);

@@ -11,6 +11,7 @@
 #include "engine/shot_planner.h"
 #include "engine/shot_suite.h"
 #include "render/shot_picture.h"
+#include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/overlay_pictures.h"
 
@@ -149,7 +150,7 @@ void runPlan(const PlanFlags& flags) {
   }
   std::optional<engine::CueBallRegion> region;
   if (!flags.region.empty()) region = parseRegion(flags.region);
-  if (!flags.png_path.empty()) checkPngPath("--png", flags.png_path);
+  if (!flags.png_path.empty()) checkOutputPath("--png", flags.png_path);
   engine::Scene scene = engine::loadScene(flags.scene);
   engine::PlanGoal goal{flags.ball, pocketIndex(flags.pocket, scene), region};
   try {

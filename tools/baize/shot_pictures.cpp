@@ -13,6 +13,7 @@
 #include "render/osmesa_context.h"
 #include "render/png_writer.h"
 #include "render/shot_picture.h"
+#include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 
 namespace baize::tools {
@@ -20,23 +21,6 @@ namespace {
 
 // Frame rates allowed, frames per second.
 constexpr double kMaxFps = 240;
-
-// Makes the parent folders of `path` and checks that a file can be created there (the writer's
-// temporary, removed again at once), so that a bad path fails before any work.
-void checkWritable(const std::string& flag, const std::string& path) {
-  const std::filesystem::path file(path);
-  std::error_code error;
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), error);
-  const std::string probe = path + ".tmp";
-  std::FILE* out = std::fopen(probe.c_str(), "wb");
-  if (out == nullptr || error) {
-    if (out != nullptr) std::fclose(out);
-    throw UsageError(flag + " = " + path + " is not allowed: the file cannot be created there" +
-                     (error ? " (" + error.message() + ")" : std::string()));
-  }
-  std::fclose(out);
-  std::remove(probe.c_str());
-}
 
 std::string frameName(long index) {
   std::ostringstream name;
@@ -82,9 +66,9 @@ void checkPictureFlags(const PictureFlags& flags) {
   if (!(flags.fps > 0 && flags.fps <= kMaxFps)) {
     rejectFlag("--fps", flags.fps, "it must lie in (0, 240] frames per second");
   }
-  if (!flags.png_path.empty()) checkWritable("--png", flags.png_path);
+  if (!flags.png_path.empty()) checkOutputPath("--png", flags.png_path);
   if (!flags.frames_dir.empty()) {
-    checkWritable("--frames", (std::filesystem::path(flags.frames_dir) / frameName(0)).string());
+    checkOutputPath("--frames", (std::filesystem::path(flags.frames_dir) / frameName(0)).string());
   }
 }
 

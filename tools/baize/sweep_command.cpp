@@ -192,7 +192,7 @@ void runSweep(const SweepFlags& flags) {
   }
   std::unique_ptr<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv = std::make_unique<AtomicFile>(flags.csv_path, "--csv");
-  if (!flags.png_path.empty()) checkPngPath("--png", flags.png_path);
+  if (!flags.png_path.empty()) checkOutputPath("--png", flags.png_path);
   engine::Scene scene = engine::loadScene(flags.scene);
   if (!flags.object.empty()) {
     bool found = false;
