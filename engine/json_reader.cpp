@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -12,13 +14,22 @@
 namespace baize::engine {
 namespace {
 
+// Documents nested deeper than this are refused: the files here nest a few levels, and writing a
+// value back into a message recurses once per level (tens of thousands overflow the stack).
+constexpr int kMaxDepth = 64;
+// A value quoted in a message is cut to this many characters (a huge value would drown it).
+constexpr std::size_t kMaxQuotedChars = 200;
+
 // Values as JSON text (numbers in their shortest exact form); NaN and infinities, which JSON
-// cannot hold, as "nan" and "inf".
+// cannot hold, as "nan" and "inf". Bytes that are not UTF-8 (from a file name, say) are replaced,
+// and a long text is cut, saying how long it was.
 std::string jsonText(const nlohmann::json& value) {
   if (value.is_number_float() && !std::isfinite(value.get<double>())) {
     return physics::valueText(value.get<double>());
   }
-  return value.dump();
+  const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (text.size() <= kMaxQuotedChars) return text;
+  return text.substr(0, kMaxQuotedChars) + "... (" + std::to_string(text.size()) + " characters)";
 }
 
 std::string typeName(const nlohmann::json& value) { return value.type_name(); }
@@ -31,11 +42,16 @@ class DuplicateKeyCheck {
  public:
   explicit DuplicateKeyCheck(std::string source) : source_(std::move(source)) {}
 
-  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+  bool operator()(int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using Event = nlohmann::json::parse_event_t;
     switch (event) {
       case Event::object_start:
       case Event::array_start:
+        if (depth >= kMaxDepth) {
+          throw std::invalid_argument(source_ + ": objects and arrays nested more than " +
+                                      std::to_string(kMaxDepth) +
+                                      " levels deep are not allowed");
+        }
         startElement();
         open_.push_back({event == Event::object_start, {}, "", -1});
         break;
@@ -90,10 +106,15 @@ class DuplicateKeyCheck {
   std::vector<Container> open_;
 };
 
-template <typename Input>
-nlohmann::json parseStrictly(Input&& input, const std::string& source, const std::string& allowed) {
+nlohmann::json parseStrictly(const std::string& text, const std::string& source,
+                             const std::string& allowed) {
+  // The parser would take a NUL byte for the end of the text and ignore what follows.
+  if (const auto nul = text.find('\0'); nul != std::string::npos) {
+    throw std::invalid_argument(source + ": a NUL byte at offset " + std::to_string(nul) +
+                                " is not allowed: " + allowed);
+  }
   try {
-    return nlohmann::json::parse(std::forward<Input>(input), DuplicateKeyCheck(source));
+    return nlohmann::json::parse(text, DuplicateKeyCheck(source));
   } catch (const nlohmann::json::exception& error) {
     // Parse errors and numbers too large for a double (1e999) alike.
     throw std::invalid_argument(source + ": not valid JSON (" + error.what() +
@@ -112,12 +133,23 @@ JsonReader::JsonReader(const nlohmann::json& object, std::string source, std::st
 }
 
 nlohmann::json JsonReader::parseFile(const std::string& file_path) {
-  std::ifstream in(file_path);
+  return parseStrictly(readTextFile(file_path), file_path, kValidJson);
+}
+
+std::string JsonReader::readTextFile(const std::string& file_path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(file_path, error)) {
+    throw std::invalid_argument(file_path + ": a directory is not allowed: it must be a file");
+  }
+  std::ifstream in(file_path, std::ios::binary);
   if (!in) {
     throw std::invalid_argument(file_path +
                                 ": the file cannot be opened: it must exist and be readable");
   }
-  return parseStrictly(in, file_path, kValidJson);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw std::invalid_argument(file_path + ": the file cannot be read");
+  return text.str();
 }
 
 nlohmann::json JsonReader::parseText(const std::string& text, const std::string& source,

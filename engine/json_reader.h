@@ -23,7 +23,11 @@ class JsonReader {
   // Parses the file. Throws std::invalid_argument when it cannot be opened, is not valid JSON (the
   // message holds the parser's line and column) or has a key twice in one object (the message names
   // the key path): nlohmann::json alone would keep the last value silently.
+  // Refuses a NUL byte and nesting deeper than 64 levels.
   static nlohmann::json parseFile(const std::string& file_path);
+  // A file's whole content; throws std::invalid_argument naming the file when it is a directory or
+  // cannot be opened or read.
+  static std::string readTextFile(const std::string& file_path);
   // Parses JSON text as parseFile parses a file; `source` names it in messages and `allowed` says
   // what the text must be when it is not valid JSON.
   static nlohmann::json parseText(const std::string& text, const std::string& source,

@@ -103,5 +103,46 @@ TEST(JsonReader, ParsingAFileRefusesAKeyGivenTwice) {
   std::filesystem::remove(path);
 }
 
+// Nesting beyond 64 levels is refused as it is parsed (writing such a value back into a message
+// recursed once per level: 70000 levels overflowed the stack); 64 levels are read.
+TEST(JsonReader, ParsingRefusesNestingDeeperThan64Levels) {
+  const auto nested = [](int levels) {
+    return std::string(levels, '[') + std::string(levels, ']');
+  };
+  EXPECT_NO_THROW(JsonReader::parseText(nested(64), "doc"));
+  EXPECT_MENTIONS(invalidArgumentMessage([&] { JsonReader::parseText(nested(65), "doc"); }),
+                  "doc: objects and arrays nested more than 64 levels deep are not allowed");
+  EXPECT_MENTIONS(invalidArgumentMessage([&] { JsonReader::parseText(nested(70000), "doc"); }),
+                  "more than 64 levels");
+}
+
+// The parser takes a NUL byte for the end of the text: what follows would be ignored.
+TEST(JsonReader, ParsingRefusesANulByte) {
+  const std::string text = std::string("{\"a\": 1}") + '\0' + "{{{";
+  EXPECT_MENTIONS(invalidArgumentMessage([&] { JsonReader::parseText(text, "doc"); }),
+                  "doc: a NUL byte at offset 8 is not allowed");
+}
+
+TEST(JsonReader, ParsingAFileRefusesADirectoryNamingIt) {
+  const std::string folder = std::filesystem::temp_directory_path().string();
+  EXPECT_MENTIONS(invalidArgumentMessage([&] { JsonReader::parseFile(folder); }),
+                  folder + ": a directory is not allowed: it must be a file");
+}
+
+// A value quoted in a message is cut after 200 characters, saying how long it was, and bytes that
+// are not UTF-8 are replaced instead of failing the message.
+TEST(JsonReader, MessagesQuoteValuesShortAndSafe) {
+  nlohmann::json document;
+  document["long"] = std::string(5000, 'x');
+  document["bytes"] = std::string("a\xff");
+  const JsonReader reader(document, "doc");
+  const std::string long_message =
+      invalidArgumentMessage([&] { reader.reject("long", "it must be short"); });
+  EXPECT_MENTIONS(long_message, "... (5002 characters) is not allowed: it must be short");
+  EXPECT_LT(long_message.size(), 300u);
+  EXPECT_MENTIONS(invalidArgumentMessage([&] { reader.reject("bytes", "it must be text"); }),
+                  "doc: bytes = \"a\xef\xbf\xbd\" is not allowed");
+}
+
 }  // namespace
 }  // namespace baize::engine

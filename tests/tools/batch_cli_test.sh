@@ -86,4 +86,24 @@ set +e
 "$baize" batch "$work/shots.jsonl" --threads -1 >/dev/null 2>&1; status=$?
 set -e
 [[ $status == 2 ]] || fail "--threads -1 must exit 2, got $status"
+# A line that is not UTF-8 gets its own error line (the parser's message quotes the byte, replaced
+# in the output); the other lines' results are kept, with one thread or two.
+printf '%s\n{"scene":"\xff.json"}\n' "$(head -1 "$work/shots.jsonl")" >"$work/bytes.jsonl"
+for threads in 1 2; do
+  set +e
+  "$baize" batch "$work/bytes.jsonl" --threads $threads >"$work/bytes.out" 2>/dev/null; status=$?
+  set -e
+  [[ $status == 1 ]] || fail "a line that is not UTF-8 must exit 1, got $status"
+  python3 - "$work/bytes.out" <<'PY'
+import json, sys
+lines = [json.loads(l) for l in open(sys.argv[1], encoding="utf-8")]
+assert len(lines) == 2 and "error" not in lines[0] and "not valid JSON" in lines[1]["error"], lines
+PY
+done
+# A directory as the input is refused (exit 2), naming it.
+set +e
+msg=$("$baize" batch "$work" 2>&1 >/dev/null); status=$?
+set -e
+[[ $status == 2 ]] || fail "batch DIRECTORY must exit 2, got $status"
+grep -qF "input $work is a directory" <<<"$msg" || fail "message: $msg"
 echo "batch CLI: ok"

@@ -134,6 +134,11 @@ check_png 960 600 "$work/bench.png"
 "$baize" chart bench-cushion "$work/bench.csv" --png "$work/bench-small.png" --width 480 \
   --height 320 >/dev/null || fail "chart bench-cushion --width 480 exited $?"
 count_palette_colours 2 "$work/bench-small.png"  # paper and exact
+# The same file with CRLF line ends (from Windows) draws the same chart.
+sed 's/$/\r/' "$work/bench.csv" >"$work/bench-crlf.csv"
+"$baize" chart bench-cushion "$work/bench-crlf.csv" --png "$work/bench-crlf.png" --width 480 \
+  --height 320 >/dev/null || fail "chart bench-cushion of a CRLF file exited $?"
+cmp -s "$work/bench-small.png" "$work/bench-crlf.png" || fail "a CRLF file draws another chart"
 
 # ---- 4. Bad input: a clear message, exit status 2 (usage) or 1 (failure), and no PNG at all.
 mkdir "$work/bad"
@@ -167,6 +172,11 @@ grep -qF "logarithmic" "$work/stderr" || fail "the log-axis message does not say
 expect_error 1 "$work/missing/bench.png" \
   chart bench-cushion "$work/bench.csv" --png "$work/missing/bench.png"
 [[ ! -e "$work/missing" ]] || fail "an unwritable --png created something"
+expect_error 2 "$work: a directory is not allowed: it must be a CSV file" chart bench-cushion "$work" \
+  --png "$work/x.png"
+printf 'solver,setting,median_ns,max_error\nexact,default,5\0,1e-10\n' >"$work/nul.csv"
+expect_error 2 "$work/nul.csv: a NUL byte is not allowed" chart bench-cushion "$work/nul.csv" \
+  --png "$work/x.png"
 expect_error 2 "fig6.csv: no column 'solver'" chart bench-cushion "$work/sweep/fig6.csv" --png "$work/x.png"
 expect_error 2 "--png is required" chart bench-cushion "$work/bench.csv"
 [[ ! -e "$work/x.png" ]] || fail "a refused bench chart left a file"

@@ -216,4 +216,28 @@ for bad in 1e-5 0 -1 nan ""; do
   grep -q -- "--cushion-tolerance" <<<"$msg" || fail "message does not name the flag: $msg"
   [[ -e "$work/never.csv" ]] && fail "CSV written for --cushion-tolerance $bad"
 done
+# Outputs: a symbolic link is followed (the file it names is replaced, the link stays), a directory
+# is refused before any work (exit 2, nothing written), and output that cannot be written (a full
+# device) fails the command (exit 1).
+scene="$root/assets/scenes/stun-shot.json"
+echo old >"$work/real.json"
+ln -s real.json "$work/link.json"
+"$baize" simulate "$scene" --json "$work/link.json" >/dev/null || fail "--json through a link exited $?"
+[[ -L "$work/link.json" ]] || fail "the link was replaced"
+python3 -c "import json, sys; json.load(open(sys.argv[1]))['events']" "$work/real.json" ||
+  fail "the link's file does not hold the result"
+mkdir "$work/folder"
+set +e
+msg=$("$baize" simulate "$scene" --json "$work/folder" 2>&1 >/dev/null); status=$?
+set -e
+[[ $status -eq 2 ]] || fail "--json DIRECTORY exited $status, expected 2"
+grep -qF -- "--json = $work/folder is not allowed: it is a directory" <<<"$msg" || fail "message: $msg"
+[[ -z "$(ls -A "$work/folder")" ]] || fail "something was written into the directory"
+if [[ -w /dev/full ]]; then
+  set +e
+  msg=$("$baize" simulate "$scene" 2>&1 >/dev/full); status=$?
+  set -e
+  [[ $status -eq 1 ]] || fail "simulate > /dev/full exited $status, expected 1"
+  grep -qF "standard output could not be written" <<<"$msg" || fail "message: $msg"
+fi
 echo "simulate CLI: all checks passed"

@@ -102,7 +102,9 @@ std::string runLine(const InputLine& line, const std::string& input_name, const 
     out["error"] = e.what();
     *failed = true;
   }
-  return out.dump();
+  // Replacing bytes that are not UTF-8 (a parse error quotes the raw input, a file name may hold
+  // any bytes) rather than throwing: the line's result is written whatever it holds.
+  return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 int runBatch(const BatchFlags& flags) {
@@ -119,6 +121,12 @@ int runBatch(const BatchFlags& flags) {
   const bool from_stdin = flags.input == "-";
   std::ifstream file;
   if (!from_stdin) {
+    std::error_code error;
+    if (std::filesystem::is_directory(flags.input, error)) {
+      throw UsageError("input " + flags.input +
+                       " is a directory, which is not allowed: it must be a file of JSON lines, "
+                       "or - for standard input");
+    }
     file.open(flags.input);
     if (!file) {
       throw UsageError("input " + flags.input +

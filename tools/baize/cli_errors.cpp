@@ -3,6 +3,7 @@
 #include <cmath>
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 
 #include "physics/value_text.h"
 
@@ -23,6 +24,10 @@ int runReportingErrors(const std::string& command, const std::function<void()>& 
   };
   try {
     body();
+    // What a command prints is its result: output that could not be written (a full disk, a
+    // closed pipe) is a failure, not a success.
+    std::cout.flush();
+    if (!std::cout) throw std::runtime_error("standard output could not be written");
     return 0;
   } catch (const UsageError& error) {
     return report(error, kExitUsage);

@@ -24,7 +24,7 @@ void requireFiniteFlag(const std::string& flag, double value);
 
 // Runs a command's body and turns what it throws into the message and exit status above
 // (std::invalid_argument, which the physics throws for inputs outside the model, counts as usage).
-// Returns 0 when the body returns normally.
+// Returns 0 when the body returns normally and standard output took everything it printed.
 int runReportingErrors(const std::string& command, const std::function<void()>& body);
 
 }  // namespace baize::tools

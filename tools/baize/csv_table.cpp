@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +23,10 @@ std::vector<std::string> fieldsOf(const std::string& line) {
 }  // namespace
 
 CsvTable CsvTable::read(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw std::invalid_argument(path + ": a directory is not allowed: it must be a CSV file");
+  }
   std::ifstream in(path);
   if (!in) {
     throw std::invalid_argument(path +
@@ -30,11 +35,20 @@ CsvTable CsvTable::read(const std::string& path) {
   CsvTable table;
   table.path_ = path;
   std::string line;
-  if (!std::getline(in, line) || line.empty()) {
+  // Lines may end in CRLF (a file from Windows): the CR is not part of the last field.
+  const auto next = [&](std::string& text) {
+    if (!std::getline(in, text)) return false;
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    if (const auto nul = text.find('\0'); nul != std::string::npos) {
+      throw std::invalid_argument(path + ": a NUL byte is not allowed: it must be a text file");
+    }
+    return true;
+  };
+  if (!next(line) || line.empty()) {
     throw std::invalid_argument(path + ": no header row: the file must start with column names");
   }
   table.header_ = fieldsOf(line);
-  for (int line_number = 2; std::getline(in, line); ++line_number) {
+  for (int line_number = 2; next(line); ++line_number) {
     if (line.empty()) continue;
     std::vector<std::string> fields = fieldsOf(line);
     if (fields.size() != table.header_.size()) {
