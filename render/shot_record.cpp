@@ -1,6 +1,8 @@
 #include "render/shot_record.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <filesystem>
 #include <stdexcept>
 
@@ -8,6 +10,14 @@
 
 namespace baize::render {
 namespace {
+
+// A ball's recorded position may lie this far beyond the table's bed and still be on the table
+// (on a cushion's nose, in a pocket's mouth or capture circle), m; farther is not a result of it.
+constexpr double kBeyondBed_m = 0.5;
+// The keys a result of `baize simulate --json` has.
+const char* const kResultKeys[] = {"scene",   "scene_path", "table",  "end_time_s", "first_ball_hit",
+                                   "pocketed", "foul",       "predictions", "samples", "physics",
+                                   "events",  "final",      "trajectories"};
 
 [[noreturn]] void reject(const std::string& source, const std::string& key,
                          const std::string& what) {
@@ -93,12 +103,25 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
     if (!scene.is_string()) reject(source, "scene", "value " + scene.dump() + " is not a path");
     scene_path = scene.get<std::string>();
   }
+  for (const auto& item : result.items()) {
+    if (std::find(std::begin(kResultKeys), std::end(kResultKeys), item.key()) ==
+        std::end(kResultKeys)) {
+      reject(source, item.key(), "an unknown key is not allowed in a result of 'baize simulate --json'");
+    }
+  }
   const engine::Scene scene = engine::loadScene(scene_path);
+  if (result.contains("table") &&
+      !(result["table"].is_string() && result["table"].get<std::string>() == scene.table.name)) {
+    reject(source, "table",
+           "value " + result["table"].dump() + " is not allowed: the scene '" + scene_path +
+               "' is on table '" + scene.table.name + "'");
+  }
   ShotRecord record;
   record.table = scene.table;
   record.ball_set = scene.ball_set;
   record.cloth = engine::simulationParamsFor(scene).cloth;
   record.end_time_s = number(result, "end_time_s", source, "");
+  if (record.end_time_s < 0) reject(source, "end_time_s", "it must be >= 0");
 
   const nlohmann::json& final_balls = member(result, "final", source, "");
   const nlohmann::json& trajectories = member(result, "trajectories", source, "");
@@ -126,6 +149,15 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
       engine::TrajectoryPiece piece;
       piece.start_time_s = number(pieces[k], "start_time_s", source, p);
       piece.state.position = vector<2>(pieces[k], "position_m", source, p);
+      if (std::abs(piece.state.position.x()) > scene.table.length_m / 2 + kBeyondBed_m ||
+          std::abs(piece.state.position.y()) > scene.table.width_m / 2 + kBeyondBed_m) {
+        reject(source, p + "position_m",
+               "value " + pieces[k]["position_m"].dump() +
+                   " is not allowed: it is off the table (beyond its bed by more than 0.5 m)");
+      }
+      if (piece.start_time_s > record.end_time_s) {
+        reject(source, p + "start_time_s", "it must not be after end_time_s");
+      }
       piece.state.velocity = vector<3>(pieces[k], "velocity_mps", source, p);
       piece.state.angular_velocity = vector<3>(pieces[k], "angular_velocity_radps", source, p);
       const nlohmann::json& pocketed = member(pieces[k], "pocketed", source, p);
@@ -142,6 +174,10 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
       trajectory.push_back(piece);
     }
     record.trajectories.push_back(trajectory);
+  }
+  if (!trajectories.is_object() || trajectories.size() != record.ball_ids.size()) {
+    reject(source, "trajectories",
+           "it must hold exactly the balls listed in \"final\" (a trajectory each)");
   }
 
   const auto index_of = [&](const nlohmann::json& id, const std::string& path) {

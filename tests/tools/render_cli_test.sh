@@ -86,8 +86,28 @@ touch "$work/a-file"
 expect_refused "--png" "$work/a-file/x.png" render "$scene" --png "$work/a-file/x.png"
 expect_refused "--png" "$work/x.png" render "$scene"
 expect_refused "--width" "$work/y.png" simulate "$scene" --png "$work/y.png" --width 0
+expect_refused "--width" "$work/y.png" simulate "$scene" --width 0  # checked without a picture too
 echo '{"scene": "nowhere.json", "trajectories": {}}' >"$work/bad-result.json"
 expect_refused "nowhere.json" "$work/x.png" render "$work/bad-result.json" --png "$work/x.png"
+# A result edited by hand: one change each to the saved result above, each refused naming the key.
+edit_result() {  # edit_result NAME PYTHON-STATEMENT-ON-r
+  python3 - "$work/result.json" "$work/$1.json" "$2" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+exec(sys.argv[3])
+json.dump(r, open(sys.argv[2], "w"))
+PY
+}
+edit_result far 'r["trajectories"]["cue"][0]["position_m"] = [1e6, 1e6]'
+expect_refused "trajectories.cue\[0\].position_m" "$work/x.png" render "$work/far.json" --png "$work/x.png"
+edit_result unknown 'r["zzz"] = 1'
+expect_refused "zzz: an unknown key" "$work/x.png" render "$work/unknown.json" --png "$work/x.png"
+edit_result table 'r["table"] = "snooker-12ft"'
+expect_refused "table: value \"snooker-12ft\"" "$work/x.png" render "$work/table.json" --png "$work/x.png"
+edit_result extra 'r["trajectories"]["ghost"] = r["trajectories"]["cue"]'
+expect_refused "trajectories: it must hold exactly" "$work/x.png" render "$work/extra.json" --png "$work/x.png"
+edit_result late 'r["end_time_s"] = -1'
+expect_refused "end_time_s: it must be >= 0" "$work/x.png" render "$work/late.json" --png "$work/x.png"
 
 # bench render, smoke size: one line with the median.
 out=$("$baize" bench render --width 64 --height 32 --repeat 2) || fail "bench render exited $?"

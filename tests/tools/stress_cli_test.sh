@@ -163,4 +163,11 @@ status=0
 "$baize" stress --replay "$work/bad.json" >/dev/null 2>"$work/err.txt" || status=$?
 [[ $status == 2 ]] || fail "a replay file with an unknown table exited $status, want 2"
 grep -q "table = \"billiards\" is not allowed" "$work/err.txt" || fail "bad table: $(cat "$work/err.txt")"
+# A seed is a whole number >= 0: "-1" is refused, not read as 2^64 - 1 (the same check serves the
+# --seed of check, sweep and plan).
+status=0
+"$baize" stress --shots 1 --seed -1 >/dev/null 2>"$work/err.txt" || status=$?
+[[ $status == 2 ]] || fail "--seed -1 exited $status, want 2"
+grep -q -- "--seed: -1 is not allowed: it must be a whole number >= 0" "$work/err.txt" ||
+  fail "--seed -1: $(cat "$work/err.txt")"
 echo "stress CLI checks passed"

@@ -38,4 +38,15 @@ int runReportingErrors(const std::string& command, const std::function<void()>& 
   }
 }
 
+CLI::Validator notNegative() {
+  return CLI::Validator(
+      [](std::string& text) {
+        return text.find_first_not_of(" \t") != std::string::npos &&
+                       text[text.find_first_not_of(" \t")] == '-'
+                   ? text + " is not allowed: it must be a whole number >= 0"
+                   : std::string();
+      },
+      "NOT NEGATIVE");
+}
+
 }  // namespace baize::tools

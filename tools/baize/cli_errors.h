@@ -3,6 +3,7 @@
 // not accept) from failures (1: a file that cannot be written, a solver that breaks down).
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -26,5 +27,9 @@ void requireFiniteFlag(const std::string& flag, double value);
 // (std::invalid_argument, which the physics throws for inputs outside the model, counts as usage).
 // Returns 0 when the body returns normally and standard output took everything it printed.
 int runReportingErrors(const std::string& command, const std::function<void()>& body);
+
+// A check for flags read into unsigned integers (seeds), which would otherwise take "-1" as 2^64 -
+// 1: the value must not start with a minus sign.
+CLI::Validator notNegative();
 
 }  // namespace baize::tools

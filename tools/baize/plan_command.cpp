@@ -208,7 +208,8 @@ void addPlanCommand(CLI::App& parent) {
                       "simulated shots for the search, noise-free and noisy (default 4000)");
   command->add_option("--noise-samples", flags->noise_samples,
                       "fresh noisy samples to re-estimate each reported shot (default 1000)");
-  command->add_option("--seed", flags->seed, "seed of the execution error (default 1)");
+  command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
+      ->check(notNegative());
   command->add_option("--report", flags->report, "shots reported (default 3)");
   command->add_option("--png", flags->png_path, "draw the best shot with its region here (PNG)");
   command->add_flag("--compare-grid", flags->compare_grid,

@@ -75,7 +75,7 @@ std::string vectorText(const Eigen::Vector3d& v) {
 void runSimulate(const SimulateFlags& flags) {
   std::unique_ptr<AtomicFile> json_file;
   if (!flags.json_path.empty()) json_file = std::make_unique<AtomicFile>(flags.json_path, "--json");
-  if (flags.pictures.wanted()) checkPictureFlags(flags.pictures);
+  checkPictureFlags(flags.pictures);  // also without --png or --frames: a bad value is an error
   const engine::Scene scene = engine::loadScene(flags.scene);
   std::vector<std::string> scene_ids;
   for (const engine::PlacedBall& b : scene.balls) scene_ids.push_back(b.id);

@@ -351,6 +351,7 @@ void addStressCommand(CLI::App& parent) {
   command
       ->add_option("--seed", flags->seed,
                    "random seed (shot k uses a generator seeded from it and k)")
+      ->check(notNegative())
       ->capture_default_str();
   command->add_option("--balls", flags->max_balls, "most balls in a shot (racks excepted)")
       ->capture_default_str();

@@ -289,7 +289,8 @@ void addSweepCommand(CLI::App& parent) {
                       "also run N samples per point with the default execution error and write "
                       "pocketing probabilities and the spread of the cue ball's finishing "
                       "positions");
-  command->add_option("--seed", flags->seed, "seed of the execution error (default 1)");
+  command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
+      ->check(notNegative());
   command->add_option("--png", flags->png_path,
                       "also draw the position map here: finishing positions coloured by the "
                       "first parameter, sized by the second, shaped by the outcome, with the "
