@@ -7,14 +7,13 @@
 #include "physics/cloth_motion.h"
 #include "physics/cushion_exact_solver.h"
 #include "physics/cushion_model.h"
+#include "physics/cushion_paper_solver.h"
 #include "physics/cushion_simple_model.h"
 
 namespace baize::engine {
 namespace {
 
-// The paper scheme's step count is an integer in [1, kMaxPaperSteps]: 1e7 increments already take
-// about a second per impact, so more is a typing slip, not a wish for accuracy.
-constexpr int kMaxPaperSteps = 10000000;
+using physics::kMaxPaperSteps;  // the paper scheme's largest step count
 // max_events is read as a JSON integer, which the reader holds as an int.
 constexpr int kMaxEventBudget = std::numeric_limits<int>::max();
 

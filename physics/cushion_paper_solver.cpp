@@ -21,8 +21,9 @@ CushionImpactResult solveCushionImpactPaper(const CushionParams& params,
                                             const PaperSolverOptions& options) {
   validateCushionParams(params);
   validateIncomingBall(incoming);
-  if (options.steps < 1) {
-    rejectValue("paper solver steps", options.steps, "it must be >= 1");
+  if (options.steps < 1 || options.steps > kMaxPaperSteps) {
+    rejectValue("paper solver steps", options.steps,
+                "it must lie in [1, " + std::to_string(kMaxPaperSteps) + "]");
   }
   const double s = contactSinTheta(params);
   const double c = std::sqrt(1 - s * s);

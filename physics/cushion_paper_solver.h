@@ -8,8 +8,12 @@
 
 namespace baize::physics {
 
+// N is an integer in [1, kMaxPaperSteps]: 1e7 increments already take about a second per impact,
+// so more is a typing slip, not a wish for accuracy.
+inline constexpr int kMaxPaperSteps = 10000000;
+
 struct PaperSolverOptions {
-  int steps = 5000;           // N in the paper; must be >= 1
+  int steps = 5000;           // N in the paper, in [1, kMaxPaperSteps]
   bool record_trace = false;  // keep the state after every increment in result.trace
 };
 

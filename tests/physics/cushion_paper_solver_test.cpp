@@ -418,11 +418,12 @@ TEST(CushionPaperSolver, TraceIsOnlyRecordedWhenAsked) {
 TEST(CushionPaperSolver, RejectsBadStepsParametersAndIncomingBalls) {
   const CushionParams p;
   const BallVelocity in = incomingBall(1.0, degrees(60), 0, 0);
-  for (int steps : {0, -5, std::numeric_limits<int>::min()}) {
+  for (int steps :
+       {0, -5, std::numeric_limits<int>::min(), kMaxPaperSteps + 1, std::numeric_limits<int>::max()}) {
     PaperSolverOptions options;
     options.steps = steps;
     expectRejected([&] { solveCushionImpactPaper(p, in, options); },
-                   {"steps = " + std::to_string(steps) + " ", ">= 1"});
+                   {"steps = " + std::to_string(steps) + " ", "it must lie in [1, 10000000]"});
   }
   PaperSolverOptions one_step;
   one_step.steps = 1;

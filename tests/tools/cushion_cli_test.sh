@@ -155,6 +155,10 @@ expect_error 2 "--bogus" cushion --bogus
 expect_error 2 "A subcommand is required" bench
 expect_error 2 "--impacts = 0 is not allowed" bench cushion --impacts 0
 expect_error 2 "--repeat = 0 is not allowed" bench cushion --repeat 0
+expect_error 2 "--impacts = 2e+09 is not allowed: it must lie in [1, 1000000]" \
+  bench cushion --impacts 2000000000
+expect_error 2 "--steps = 2e+09 is not allowed: it must lie in [1, 10000000]" \
+  cushion --solver paper --steps 2000000000
 expect_error 1 "--csv = $work/missing/bench.csv: cannot create" \
   bench cushion --impacts 1 --repeat 1 --csv "$work/missing/bench.csv"
 [[ ! -e "$work/never" && ! -e "$work/missing" ]] || fail "a refused command left files behind"

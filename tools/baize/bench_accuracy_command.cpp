@@ -261,7 +261,9 @@ std::vector<Configuration> configurations() {
 }
 
 void runBenchAccuracy(const BenchAccuracyFlags& flags) {
-  if (flags.repeats < 1) rejectFlag("--repeats", flags.repeats, "it must be >= 1");
+  if (flags.repeats < 1 || flags.repeats > kMaxBenchCount) {
+    rejectFlag("--repeats", flags.repeats, kBenchCountAllowed);
+  }
   if (flags.shots < 0) rejectFlag("--shots", flags.shots, "it must be >= 0 (0: all)");
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");

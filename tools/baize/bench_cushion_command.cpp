@@ -46,8 +46,12 @@ void printRatio(const std::string& what, double ratio, double target) {
 }
 
 void runBench(const BenchFlags& flags) {
-  if (flags.impacts < 1) rejectFlag("--impacts", flags.impacts, "it must be >= 1");
-  if (flags.passes < 1) rejectFlag("--repeat", flags.passes, "it must be >= 1");
+  if (flags.impacts < 1 || flags.impacts > kMaxBenchCount) {
+    rejectFlag("--impacts", flags.impacts, kBenchCountAllowed);
+  }
+  if (flags.passes < 1 || flags.passes > kMaxBenchCount) {
+    rejectFlag("--repeat", flags.passes, kBenchCountAllowed);
+  }
   // Opened first, so that an unwritable path fails before the measurement.
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");

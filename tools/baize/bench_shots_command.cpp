@@ -109,8 +109,12 @@ std::vector<engine::Scene> randomShots(int count) {
 }
 
 void runBenchShots(const BenchShotsFlags& flags) {
-  if (flags.repeat < 1) rejectFlag("--repeat", flags.repeat, "it must be >= 1");
-  if (flags.random_shots < 1) rejectFlag("--random-shots", flags.random_shots, "it must be >= 1");
+  if (flags.repeat < 1 || flags.repeat > kMaxBenchCount) {
+    rejectFlag("--repeat", flags.repeat, kBenchCountAllowed);
+  }
+  if (flags.random_shots < 1 || flags.random_shots > kMaxBenchCount) {
+    rejectFlag("--random-shots", flags.random_shots, kBenchCountAllowed);
+  }
   if (flags.cushion_tolerance_flag->count() > 0 && !flags.cushion_tolerance) {
     throw UsageError(
         "--cushion-tolerance = \"\" is not allowed: it must be a number in [1e-14, 1e-6]");

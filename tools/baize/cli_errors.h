@@ -10,6 +10,11 @@
 
 namespace baize::tools {
 
+// The largest count a bench flag (runs, impacts, shots) takes: a million already runs for hours,
+// and a larger one is a typing slip that would exhaust memory or time.
+constexpr int kMaxBenchCount = 1000000;
+constexpr const char* kBenchCountAllowed = "it must lie in [1, 1000000]";
+
 constexpr int kExitUsage = 2;
 constexpr int kExitFailure = 1;
 

@@ -52,8 +52,9 @@ void validateFlags(const CushionFlags& flags) {
     throw UsageError(
         "--tolerance sets the exact solver's accuracy; with --solver paper use --steps");
   }
-  if (flags.setting.paper_steps < 1) {
-    rejectFlag("--steps", flags.setting.paper_steps, "it must be >= 1");
+  if (flags.setting.paper_steps < 1 || flags.setting.paper_steps > physics::kMaxPaperSteps) {
+    rejectFlag("--steps", flags.setting.paper_steps,
+               "it must lie in [1, " + std::to_string(physics::kMaxPaperSteps) + "]");
   }
   requireFiniteFlag("--tolerance", flags.setting.exact_tolerance);
   if (!(flags.setting.exact_tolerance > 0)) {
