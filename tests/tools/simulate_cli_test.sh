@@ -233,6 +233,12 @@ set -e
 [[ $status -eq 2 ]] || fail "--json DIRECTORY exited $status, expected 2"
 grep -qF -- "--json = $work/folder is not allowed: it is a directory" <<<"$msg" || fail "message: $msg"
 [[ -z "$(ls -A "$work/folder")" ]] || fail "something was written into the directory"
+# An empty path is refused, not taken for "no output" (every path flag has the same check).
+set +e
+msg=$("$baize" simulate "$scene" --json '' 2>&1 >/dev/null); status=$?
+set -e
+[[ $status -eq 2 ]] || fail "--json '' exited $status, expected 2"
+grep -qF -- "--json: an empty value is not allowed" <<<"$msg" || fail "message: $msg"
 if [[ -w /dev/full ]]; then
   set +e
   msg=$("$baize" simulate "$scene" 2>&1 >/dev/full); status=$?

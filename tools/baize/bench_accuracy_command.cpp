@@ -377,7 +377,8 @@ void addBenchAccuracyCommand(CLI::App& parent) {
       "Run time against error for whole shots: the event loop (its cushion impacts solved to the "
       "default and looser tolerances), a fixed-step integrator of the same physics and a Box2D "
       "baseline");
-  command->add_option("--csv", flags->csv_path, "also write the table to this CSV file");
+  command->add_option("--csv", flags->csv_path, "also write the table to this CSV file")
+      ->check(notEmpty());
   command->add_option("--shots", flags->shots, "use only the first N shots of the set (0: all)")
       ->capture_default_str();
   command->add_option("--repeats", flags->repeats, "timed runs per shot and configuration, at most")

@@ -99,7 +99,8 @@ void addBenchCushionCommand(CLI::App& bench) {
       "cushion",
       "Time the paper and exact cushion solvers and measure their error against a "
       "converged reference, over one fixed seeded set of impacts");
-  command->add_option("--csv", flags->csv_path, "also write the table to this CSV file");
+  command->add_option("--csv", flags->csv_path, "also write the table to this CSV file")
+      ->check(notEmpty());
   command->add_option("--impacts", flags->impacts, "impacts in the set (a smoke run can use few)")
       ->capture_default_str();
   command->add_option("--repeat", flags->passes, "timed passes; each impact keeps its best time")

@@ -205,7 +205,8 @@ void addBenchShotsCommand(CLI::App& parent) {
   auto flags = std::make_shared<BenchShotsFlags>();
   CLI::App* command = parent.add_subcommand(
       "shots", "Time whole shots: the shipped scenes and a seeded set of random single shots");
-  command->add_option("--csv", flags->csv_path, "also write the table to this CSV file");
+  command->add_option("--csv", flags->csv_path, "also write the table to this CSV file")
+      ->check(notEmpty());
   command->add_option("--repeat", flags->repeat, "timed runs per scene (median)")
       ->capture_default_str();
   command->add_option("--random-shots", flags->random_shots, "random single shots")

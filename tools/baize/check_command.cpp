@@ -203,9 +203,12 @@ void addCheckCommand(CLI::App& parent) {
       "check",
       "Run a shot suite: pass/fail per case with the measured values (docs/positional.md)");
   command->add_option("suite", flags->suite, "the suite file (JSON)")->required();
-  command->add_option("--junit", flags->junit_path, "also write a JUnit XML report here");
-  command->add_option("--png", flags->png_dir,
-                      "draw each failing case's shot with its expected region to DIR/<case>.png");
+  command->add_option("--junit", flags->junit_path, "also write a JUnit XML report here")
+      ->check(notEmpty());
+  command
+      ->add_option("--png", flags->png_dir,
+                   "draw each failing case's shot with its expected region to DIR/<case>.png")
+      ->check(notEmpty());
   command->add_option("--noise", flags->noise_samples,
                       "also run N samples of each case with execution error and report the "
                       "probability of each expectation (pass/fail stays the noise-free shot's)");

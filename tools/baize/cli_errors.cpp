@@ -49,4 +49,12 @@ CLI::Validator notNegative() {
       "NOT NEGATIVE");
 }
 
+CLI::Validator notEmpty() {
+  return CLI::Validator(
+      [](std::string& text) {
+        return text.empty() ? std::string("an empty value is not allowed") : std::string();
+      },
+      "");
+}
+
 }  // namespace baize::tools

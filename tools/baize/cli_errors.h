@@ -36,5 +36,7 @@ int runReportingErrors(const std::string& command, const std::function<void()>& 
 // A check for flags read into unsigned integers (seeds), which would otherwise take "-1" as 2^64 -
 // 1: the value must not start with a minus sign.
 CLI::Validator notNegative();
+// A check for path and text flags whose empty value would otherwise read as "not given".
+CLI::Validator notEmpty();
 
 }  // namespace baize::tools

@@ -273,7 +273,8 @@ void addCushionCommand(CLI::App& parent) {
           ->excludes(angle)
           ->excludes(topspin)
           ->excludes(sidespin)
-          ->excludes(json);
+          ->excludes(json)
+          ->check(notEmpty());
 
   command->callback([flags] {
     if (const int status = runReportingErrors("cushion", [&] { runCushion(*flags); })) {

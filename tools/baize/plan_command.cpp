@@ -202,8 +202,10 @@ void addPlanCommand(CLI::App& parent) {
   command->add_option("scene", flags->scene, "the scene file (JSON, docs/scenes.md)")->required();
   command->add_option("--ball", flags->ball, "the ball to pot")->required();
   command->add_option("--pocket", flags->pocket, "the pocket: index 0-5 or name")->required();
-  command->add_option("--region", flags->region,
-                      "where the cue ball must stop: circle:X,Y,R or rectangle:X0,Y0,X1,Y1 (m)");
+  command
+      ->add_option("--region", flags->region,
+                   "where the cue ball must stop: circle:X,Y,R or rectangle:X0,Y0,X1,Y1 (m)")
+      ->check(notEmpty());
   command->add_option("--budget", flags->budget,
                       "simulated shots for the search, noise-free and noisy (default 4000)");
   command->add_option("--noise-samples", flags->noise_samples,
@@ -211,7 +213,8 @@ void addPlanCommand(CLI::App& parent) {
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
       ->check(notNegative());
   command->add_option("--report", flags->report, "shots reported (default 3)");
-  command->add_option("--png", flags->png_path, "draw the best shot with its region here (PNG)");
+  command->add_option("--png", flags->png_path, "draw the best shot with its region here (PNG)")
+      ->check(notEmpty());
   command->add_flag("--compare-grid", flags->compare_grid,
                     "also run a blind grid of the same budget and compare the best probabilities");
   command->add_option("--grid-samples", flags->grid_samples,

@@ -31,7 +31,8 @@ std::string frameName(long index) {
 }  // namespace
 
 void addPictureFlags(CLI::App& command, PictureFlags& flags) {
-  command.add_option("--png", flags.png_path, "write a picture of the shot here (PNG)");
+  command.add_option("--png", flags.png_path, "write a picture of the shot here (PNG)")
+      ->check(notEmpty());
   command.add_option("--width", flags.width_px, "picture width, px (default 1600)");
   command.add_option("--height", flags.height_px, "picture height, px (default 800)");
   command.add_option("--view", flags.view, "top (default) or angled");
@@ -39,8 +40,10 @@ void addPictureFlags(CLI::App& command, PictureFlags& flags) {
                    "add a legend: each ball that moves with its speed and spin, and the key");
   command.add_option("--at", flags.at_s,
                      "draw the balls at this time, s, and the traces up to it (default: the end)");
-  command.add_option("--frames", flags.frames_dir,
-                     "write the shot as numbered frames DIR/frame_00000.png ... in real time");
+  command
+      .add_option("--frames", flags.frames_dir,
+                  "write the shot as numbered frames DIR/frame_00000.png ... in real time")
+      ->check(notEmpty());
   command.add_option("--fps", flags.fps, "frames per second with --frames (default 30)");
 }
 

@@ -68,7 +68,8 @@ SampleRequest parseSample(const std::string& text, const std::vector<std::string
 
 std::string vectorText(const Eigen::Vector3d& v) {
   std::ostringstream out;
-  out << std::setprecision(4) << std::fixed << '[' << v.x() << ", " << v.y() << ", " << v.z() << ']';
+  out << std::setprecision(4) << std::fixed << '[' << v.x() << ", " << v.y() << ", " << v.z()
+      << ']';
   return out.str();
 }
 
@@ -82,9 +83,9 @@ void runSimulate(const SimulateFlags& flags) {
   std::vector<SampleRequest> samples;
   for (const std::string& text : flags.samples) samples.push_back(parseSample(text, scene_ids));
   const auto start = std::chrono::steady_clock::now();
-  const engine::SceneRun run = engine::runScene(
-      scene, /*record_trajectories=*/json_file != nullptr || flags.pictures.wanted() ||
-                 !samples.empty());
+  const engine::SceneRun run =
+      engine::runScene(scene, /*record_trajectories=*/json_file != nullptr ||
+                                  flags.pictures.wanted() || !samples.empty());
   const double wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const engine::SimulationResult& r = run.result;
@@ -99,8 +100,7 @@ void runSimulate(const SimulateFlags& flags) {
             << " balls)\n";
   std::cout << "strike: cue ball '" << scene.cue_ball << "' at " << run.strike.ball.v.norm()
             << " m/s\n";
-  const nlohmann::json physics =
-      engine::physicsJson(params, engine::cueStrikeParamsFor(scene));
+  const nlohmann::json physics = engine::physicsJson(params, engine::cueStrikeParamsFor(scene));
   std::cout << "models: cushion " << physics["cushion"]["model"].get<std::string>()
             << ", ball-ball " << physics["ball_ball"]["model"].get<std::string>()
             << (physics["cue"].contains("squirt_end_mass_kg") ? ", squirt\n" : "\n");
@@ -129,8 +129,7 @@ void runSimulate(const SimulateFlags& flags) {
   nlohmann::json sampled = nlohmann::json::array();
   for (const SampleRequest& request : samples) {
     const engine::Trajectory& path = r.trajectories.at(request.ball);
-    const physics::BallState s =
-        engine::sampleTrajectory(params.cloth, path, request.time_s);
+    const physics::BallState s = engine::sampleTrajectory(params.cloth, path, request.time_s);
     nlohmann::json entry = {{"ball", id(request.ball)}, {"time_s", request.time_s}};
     // A pocketed ball is in its pocket from the piece that says so on; its state is where it fell.
     const engine::TrajectoryPiece* fell = nullptr;
@@ -213,7 +212,8 @@ void addSimulateCommand(CLI::App& parent) {
       "simulate", "Strike a scene's cue ball and simulate the shot until every ball is at rest");
   command->add_option("scene", flags->scene, "the scene file (JSON, see docs/scenes.md)")
       ->required();
-  command->add_option("--json", flags->json_path, "also write the events and final states here");
+  command->add_option("--json", flags->json_path, "also write the events and final states here")
+      ->check(notEmpty());
   command->add_option("--sample", flags->samples,
                       "print (and with --json write) BALL's state at TIME_S seconds after the "
                       "strike, as BALL@TIME_S; repeatable");

@@ -364,8 +364,10 @@ void addStressCommand(CLI::App& parent) {
   command
       ->add_option("--max-events", flags->max_events, "a shot needing more events counts as a hang")
       ->capture_default_str();
-  command->add_option("--failures", flags->failures_dir,
-                      "write a reproduction of every failing shot into this directory");
+  command
+      ->add_option("--failures", flags->failures_dir,
+                   "write a reproduction of every failing shot into this directory")
+      ->check(notEmpty());
   command->add_option(
       "--replay", flags->replay_path,
       "check the one shot of a reproduction file (a scene or a state file) instead");

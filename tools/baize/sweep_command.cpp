@@ -281,7 +281,8 @@ void addSweepCommand(CLI::App& parent) {
       ->add_option("--vary", flags->vary,
                    std::string("NAME=START:STOP:STEP, once or twice; NAME: ") + kParameterHelp)
       ->allow_extra_args(false);
-  command->add_option("--csv", flags->csv_path, "write the CSV here (default: standard output)");
+  command->add_option("--csv", flags->csv_path, "write the CSV here (default: standard output)")
+      ->check(notEmpty());
   command->add_option("--object", flags->object,
                       "the ball whose pocketing object_pocketed reports (default: any ball but "
                       "the cue ball)");
@@ -291,10 +292,12 @@ void addSweepCommand(CLI::App& parent) {
                       "positions");
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
       ->check(notNegative());
-  command->add_option("--png", flags->png_path,
-                      "also draw the position map here: finishing positions coloured by the "
-                      "first parameter, sized by the second, shaped by the outcome, with the "
-                      "1-sigma ellipses under --noise (PNG, 1600 x 800)");
+  command
+      ->add_option("--png", flags->png_path,
+                   "also draw the position map here: finishing positions coloured by the "
+                   "first parameter, sized by the second, shaped by the outcome, with the "
+                   "1-sigma ellipses under --noise (PNG, 1600 x 800)")
+      ->check(notEmpty());
   command->callback([flags] {
     if (const int status = runReportingErrors("sweep", [&] { runSweep(*flags); })) {
       throw CLI::RuntimeError(status);
