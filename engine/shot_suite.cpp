@@ -13,6 +13,10 @@
 namespace baize::engine {
 namespace {
 
+// The longest case name, in bytes: a name is also a PNG file's name (with its ".png"), and file
+// names are at most 255 bytes.
+constexpr std::size_t kMaxCaseNameChars = 200;
+
 constexpr double kRadToDeg = 180 / M_PI;
 
 std::string fixed(double value, int decimals = 3) {
@@ -187,7 +191,17 @@ std::vector<Expectation> readExpectations(const JsonReader& reader, const nlohma
 
 SuiteCase readCase(const nlohmann::json& raw, const std::string& source, int index) {
   const std::string indexed = "cases[" + std::to_string(index) + "]";
-  const std::string name = JsonReader(raw, source, indexed).text("name");
+  const JsonReader named(raw, source, indexed);
+  const std::string name = named.text("name");
+  // The name starts a line of the report and a PNG file's name: printable, and not too long for
+  // either.
+  const bool printable = std::all_of(name.begin(), name.end(), [](char c) {
+    return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+  });
+  if (!printable || name.size() > kMaxCaseNameChars) {
+    named.reject("name", "a case name has at most " + std::to_string(kMaxCaseNameChars) +
+                             " characters and no control characters (line breaks, tabs)");
+  }
   const JsonReader reader(raw, source, "case \"" + name + "\"");
   reader.requireKeys({"name", "scene", "expect"}, {"description", "shot"});
   if (reader.has("description")) reader.text("description");

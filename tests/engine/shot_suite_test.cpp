@@ -114,6 +114,18 @@ TEST(SuiteParsing, CaseLevelErrorsNameTheCase) {
   EXPECT_MENTIONS(message, "cases[1].name");
   EXPECT_MENTIONS(message, "straight");
 
+  // A name starts report lines and names PNG files: no line breaks, at most 200 characters.
+  for (const std::string& name : {std::string("a\nPASS fake"), std::string("tab\there"),
+                                  std::string(201, 'n')}) {
+    document = oneCase(R"({"no_foul": true})");
+    document["cases"][0]["name"] = name;
+    EXPECT_MENTIONS(suiteError(document), "cases[0].name");
+    EXPECT_MENTIONS(suiteError(document), "at most 200 characters and no control characters");
+  }
+  document = oneCase(R"({"no_foul": true})");
+  document["cases"][0]["name"] = std::string(200, 'n');
+  EXPECT_NO_THROW(suiteFromJson(document, "drills.json"));
+
   EXPECT_MENTIONS(suiteError(nlohmann::json::parse(R"({"cases": []})")), "cases");
   EXPECT_MENTIONS(suiteError(nlohmann::json::parse(R"({"cases": [], "x": 1})")), "x");
 }

@@ -126,4 +126,12 @@ err=$("$baize" check "$root/assets/suites/positional-drills.json" --noise -3 2>&
 set -e
 [[ $status == 2 ]] || fail "--noise -3 must exit 2, got $status"
 grep -q -- "--noise" <<<"$err" || fail "message: $err"
+# Each sigma flag is named as it was given, in its own units.
+for flag in --sigma-tip-mm --sigma-elevation-deg --sigma-aim-deg --sigma-speed-mps; do
+  set +e
+  err=$("$baize" check "$root/assets/suites/positional-drills.json" $flag -1 2>&1); status=$?
+  set -e
+  [[ $status == 2 ]] || fail "$flag -1 must exit 2, got $status"
+  grep -q -- "$flag = -1 is not allowed: it must be >= 0" <<<"$err" || fail "message: $err"
+done
 echo "check CLI: ok"

@@ -118,7 +118,16 @@ int runCheck(const CheckFlags& flags) {
                "a number of samples per case in [0, " + std::to_string(kMaxNoiseSamples) + "]");
   }
   engine::ExecutionNoise noise = flags.noise;
-  requireFiniteFlag("--sigma-tip-mm", flags.tip_sigma_mm);
+  // Each sigma checked as its flag gives it (the engine's own check names the quantity in SI
+  // units).
+  for (const auto& [flag, value] :
+       {std::pair<const char*, double>{"--sigma-tip-mm", flags.tip_sigma_mm},
+        {"--sigma-elevation-deg", noise.elevation_sigma_deg},
+        {"--sigma-aim-deg", noise.aim_sigma_deg},
+        {"--sigma-speed-mps", noise.speed_sigma_mps}}) {
+    requireFiniteFlag(flag, value);
+    if (value < 0) rejectFlag(flag, value, "it must be >= 0");
+  }
   noise.tip_offset_sigma_m = flags.tip_sigma_mm / 1000;
   engine::validateExecutionNoise(noise);
   std::unique_ptr<AtomicFile> junit;
