@@ -141,17 +141,22 @@ void validateClothParams(const ClothParams& p) {
   requireFinite("cloth spinning friction mu_sp", p.spinning_friction);
   if (!(p.radius_m > 0)) rejectValue("ball radius R (m)", p.radius_m, "it must be > 0");
   if (!(p.gravity_mps2 > 0)) rejectValue("gravity g (m/s^2)", p.gravity_mps2, "it must be > 0");
-  // Zero friction would make a state last forever; 1 and above is not cloth.
-  if (!(p.sliding_friction > 0 && p.sliding_friction < 1)) {
-    rejectValue("cloth sliding friction mu_s", p.sliding_friction, "it must lie in (0, 1)");
+  // Zero friction would make a state last forever (and one near zero longer than event times can
+  // be solved for); 1 and above is not cloth.
+  const std::string low = valueText(kMinClothFriction);
+  if (!(p.sliding_friction >= kMinClothFriction && p.sliding_friction < 1)) {
+    rejectValue("cloth sliding friction mu_s", p.sliding_friction,
+                "it must lie in [" + low + ", 1)");
   }
-  if (!(p.rolling_friction > 0 && p.rolling_friction < p.sliding_friction)) {
+  if (!(p.rolling_friction >= kMinClothFriction && p.rolling_friction < p.sliding_friction)) {
     rejectValue("cloth rolling friction mu_r", p.rolling_friction,
-                "it must lie in (0, mu_s) = (0, " + valueText(p.sliding_friction) +
+                "it must lie in [" + low + ", mu_s) = [" + low + ", " +
+                    valueText(p.sliding_friction) +
                     "): rolling resistance is far below sliding friction");
   }
-  if (!(p.spinning_friction > 0 && p.spinning_friction < 1)) {
-    rejectValue("cloth spinning friction mu_sp", p.spinning_friction, "it must lie in (0, 1)");
+  if (!(p.spinning_friction >= kMinClothFriction && p.spinning_friction < 1)) {
+    rejectValue("cloth spinning friction mu_sp", p.spinning_friction,
+                "it must lie in [" + low + ", 1)");
   }
 }
 

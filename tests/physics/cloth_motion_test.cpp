@@ -650,6 +650,16 @@ TEST(ClothMotionTest, BadParametersAndStatesAreRejected) {
   expectRejected(withParam(&ClothParams::rolling_friction, -1), "mu_r = -1");
   expectRejected(withParam(&ClothParams::spinning_friction, kInfinity), "mu_sp = inf");
   expectRejected(withParam(&ClothParams::spinning_friction, 0), "mu_sp = 0");
+  // Near zero: a state would end beyond the times events are solved in (1e-300 put it at 1e300 s).
+  expectRejected(withParam(&ClothParams::rolling_friction, 1e-300), "mu_r = 1e-300 is not allowed");
+  expectRejected(withParam(&ClothParams::sliding_friction, 1e-7), "mu_s = 1e-07 is not allowed");
+  expectRejected(withParam(&ClothParams::spinning_friction, 1e-300), "mu_sp = 1e-300");
+  ClothParams slowest = poolCloth();
+  slowest.rolling_friction = kMinClothFriction;
+  slowest.spinning_friction = kMinClothFriction;
+  const BallState fastest = makeBall({0, 0}, {1e3, 0, 0}, {0, 0, 0});  // the largest speed accepted
+  EXPECT_NO_THROW(advance(slowest, fastest, 1));
+  EXPECT_LT(timeToStateChange(slowest, advance(slowest, fastest, 10)), 1e9);
 
   const ClothParams params = poolCloth();
   expectRejected(
