@@ -10,6 +10,13 @@
 #include "physics/value_text.h"
 
 namespace baize::engine {
+namespace {
+
+// The energy a paper-scheme impact may gain, relative: rounding only. More means its increments
+// are too coarse for the impact (the scheme is first order).
+constexpr double kPaperEnergyGrowthAllowed = 1e-12;
+
+}  // namespace
 
 const char* cushionModelName(CushionModelChoice choice) {
   switch (choice) {
@@ -50,7 +57,20 @@ physics::BallVelocity resolveCushionContact(const SimulationParams& params,
     case CushionModelChoice::SeedPaper: {
       physics::PaperSolverOptions options;
       options.steps = params.cushion_paper_steps;
-      return physics::solveCushionImpactPaper(params.cushion, incoming, options).after;
+      const physics::BallVelocity after =
+          physics::solveCushionImpactPaper(params.cushion, incoming, options).after;
+      // The paper's Euler scheme is first order: with too few increments it can hand back more
+      // energy than the ball brought, and the shot would go on from a state no impact makes.
+      const double before_J = physics::kineticEnergy(params.cushion, incoming);
+      const double after_J = physics::kineticEnergy(params.cushion, after);
+      if (after_J > before_J * (1 + kPaperEnergyGrowthAllowed)) {
+        throw std::runtime_error(
+            "physics.cushion.paper_steps = " + std::to_string(params.cushion_paper_steps) +
+            ": the paper scheme made a cushion impact gain energy (" +
+            physics::valueText(before_J) + " J in, " + physics::valueText(after_J) +
+            " J out): that is too few increments for this impact; use more, or the exact model");
+      }
+      return after;
     }
     case CushionModelChoice::SimpleRestitution:
       return physics::simpleCushionRebound(params.cushion_simple, incoming);

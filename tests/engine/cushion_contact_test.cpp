@@ -122,6 +122,29 @@ TEST(CushionContact, PaperSchemeAgreesWithTheExactSolverToItsFirstOrderError) {
   }
 }
 
+// Too few increments can make the paper scheme hand back more energy than the ball brought (one
+// increment gives a rolling ball at 1.5 m/s, 30 degrees, almost twice its energy): the shot fails
+// saying so and naming the key, instead of going on from a state no impact makes.
+TEST(CushionContact, APaperImpactThatGainsEnergyFailsTheShot) {
+  SimulationParams p = poolSimulationParams();
+  p.cushion_model = CushionModelChoice::SeedPaper;
+  const double R = p.cushion.radius_m;
+  const BallVelocity in = physics::incomingBall(1.5, 30 * M_PI / 180, 1.5 / R, 0);
+  p.cushion_paper_steps = 1;
+  try {
+    resolveCushionContact(p, in);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("physics.cushion.paper_steps = 1: the paper scheme made a "
+                                         "cushion impact gain energy"),
+              std::string::npos)
+        << e.what();
+  }
+  p.cushion_paper_steps = 5000;  // the paper's own N
+  const BallVelocity out = resolveCushionContact(p, in);
+  EXPECT_LT(physics::kineticEnergy(p.cushion, out), physics::kineticEnergy(p.cushion, in));
+}
+
 TEST(CushionContact, BadOptionsAreRefusedNamingTheValue) {
   SimulationParams p = poolSimulationParams();
   const std::vector<BallState> ball = {rollingBallAt(0, 0, 1, 0, p.cushion.radius_m)};
