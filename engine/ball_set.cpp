@@ -36,6 +36,7 @@ BallSet ballSetFromJson(const nlohmann::json& document, const std::string& sourc
   const JsonReader root(document, source);
   root.requireExactKeys({"name", "description", "radius_m", "mass_kg", "balls"});
   BallSet set;
+  set.source = source;
   set.name = root.text("name");
   set.description = root.text("description");
   set.radius_m = root.positiveNumber("radius_m");

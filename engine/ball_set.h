@@ -16,6 +16,7 @@ struct BallSpec {
 };
 
 struct BallSet {
+  std::string source;  // the file it was read from (or the document's name), for messages
   std::string name;
   std::string description;
   double radius_m = 0;

@@ -203,7 +203,10 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   result.shot.heading_rad = heading_rad;
   readCueShot(shot, &result.shot);
   if (scene.has("physics")) result.overrides = readPhysicsOverrides(scene.object("physics"));
-  validateScenePhysics(simulationParamsFor(result), cueStrikeParamsFor(result), source);
+  validateScenePhysics(simulationParamsFor(result), cueStrikeParamsFor(result), source,
+                       "the values of table '" + result.table.name + "' (" + result.table.source +
+                           "), ball set '" + result.ball_set.name + "' (" +
+                           result.ball_set.source + ") and this scene's physics, if any");
 
   // Where the balls stand: on the table, apart. Between the rails anywhere R clear of them; beyond
   // a rail's line only in a pocket's opening (a ball hanging in the jaws), inside the cushion

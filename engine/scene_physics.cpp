@@ -138,13 +138,16 @@ void setIf(const std::optional<Value>& value, Value* target) {
   if (value) *target = *value;
 }
 
-// Runs `check` (a physics validator); a refusal gets the file and the group's key path in front.
+// Runs `check` (a physics validator); a refusal gets the file and the group's key path in front
+// and where the values came from behind.
 template <class Check>
-void validateGroup(const std::string& source, const char* group, const Check& check) {
+void validateGroup(const std::string& source, const std::string& origin, const char* group,
+                   const Check& check) {
   try {
     check();
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(source + ": physics." + group + ": " + e.what());
+    throw std::invalid_argument(source + ": physics." + group + ": " + e.what() + " (" + origin +
+                                ")");
   }
 }
 
@@ -197,16 +200,17 @@ void applyPhysicsOverrides(const PhysicsOverrides& o, physics::CueStrikeParams* 
 }
 
 void validateScenePhysics(const SimulationParams& p, const physics::CueStrikeParams& cue,
-                          const std::string& source) {
-  validateGroup(source, "cloth", [&] { physics::validateClothParams(p.cloth); });
-  validateGroup(source, "cushion", [&] {
+                          const std::string& source, const std::string& origin) {
+  validateGroup(source, origin, "cloth", [&] { physics::validateClothParams(p.cloth); });
+  validateGroup(source, origin, "cushion", [&] {
     physics::validateCushionParams(p.cushion);
     validateCushionContactParams(p);
     if (p.cushion_model == CushionModelChoice::SeedExact)
       physics::validateExactSolverOptions(p.cushion_solver);
   });
-  validateGroup(source, "ball_ball", [&] { physics::validateBallBallParams(p.ball_ball); });
-  validateGroup(source, "cue", [&] { physics::validateCueStrikeParams(cue); });
+  validateGroup(source, origin, "ball_ball",
+                [&] { physics::validateBallBallParams(p.ball_ball); });
+  validateGroup(source, origin, "cue", [&] { physics::validateCueStrikeParams(cue); });
 }
 
 nlohmann::json physicsJson(const SimulationParams& p, const physics::CueStrikeParams& cue) {

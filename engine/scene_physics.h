@@ -57,9 +57,11 @@ void applyPhysicsOverrides(const PhysicsOverrides& overrides, SimulationParams* 
 void applyPhysicsOverrides(const PhysicsOverrides& overrides, physics::CueStrikeParams* cue);
 
 // Validates the parameters a scene runs with, group by group (cloth, cushion, ball_ball, cue); a
-// refusal is rethrown as "<source>: physics.<group>: <the validator's message>".
+// refusal is rethrown as "<source>: physics.<group>: <the validator's message> (<origin>)", where
+// `origin` says where the values came from (the table and ball set files as well as the scene:
+// a table's contact height or a ball set's mass may be the value refused).
 void validateScenePhysics(const SimulationParams& params, const physics::CueStrikeParams& cue,
-                          const std::string& source);
+                          const std::string& source, const std::string& origin);
 
 // The parameters in the scene format's keys and units (the "physics" object a scene could give to
 // get them), for reports: `baize simulate --json` echoes it.

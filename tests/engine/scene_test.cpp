@@ -340,6 +340,22 @@ TEST(Scene, ATableWhosePocketsLetBallsThroughIsRefused) {
   }
 }
 
+// A value the physics refuses may come from the table or ball set file, not the scene: the message
+// names those files too (it used to blame only the scene's physics.cushion, which it did not have).
+TEST(Scene, APhysicsRefusalNamesTheTableAndBallSetFiles) {
+  const std::string folder = ::testing::TempDir();
+  nlohmann::json table =
+      nlohmann::json::parse(std::ifstream(assetsDirectory() + "/tables/pool-9ft.json"));
+  table["cushion_contact_height_m"] = 0.01;  // below the ball's centre
+  std::ofstream(folder + "scene_test_low_nose.json") << table.dump(2);
+  nlohmann::json doc = lonePoolBall(0.9, 3);
+  doc["table"] = folder + "scene_test_low_nose.json";
+  const std::string message = invalidArgumentMessage([&] { sceneFromJson(doc, "s.json"); });
+  EXPECT_THAT(message, HasSubstr("s.json: physics.cushion: cushion contact height h (m) = 0.01"));
+  EXPECT_THAT(message, HasSubstr("table 'pool-9ft' (" + folder + "scene_test_low_nose.json)"));
+  EXPECT_THAT(message, HasSubstr("ball set 'pool' ("));
+}
+
 // A deep capture circle that covers the closing line's middle but not the gates past the facings'
 // deep ends: a ball steered past the end of a facing used to leave the table (found by review).
 // Refused at load; at the radius the message asks for, the same shot stays on the table.
