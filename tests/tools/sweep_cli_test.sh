@@ -88,7 +88,8 @@ assert float(r["p_cue_pocketed"]) == 0 and float(r["p_miscue"]) == 0, r
 PY
 
 for bad in "--vary spin=0:1:0.1" "--vary speed=2:1:0.1" "--vary speed=1:2:0" "--vary speed=1:2" \
-  "--vary speed=1:2:1 --vary speed=1:2:1" ""; do
+  "--vary speed=1:2:1 --vary speed=1:2:1" "" "--vary speed=1:20:5" "--vary speed=0:1:0.5" \
+  "--vary aim=0:1e300:1e299"; do
   set +e
   # shellcheck disable=SC2086
   "$baize" sweep "$work/follow.json" $bad >/dev/null 2>"$work/err.txt"

@@ -14,6 +14,7 @@
 #include "engine/scene.h"
 #include "engine/shot_outcome.h"
 #include "engine/shot_suite.h"
+#include "physics/cue_strike.h"
 #include "physics/value_text.h"
 #include "render/position_map.h"
 #include "render/shot_picture.h"
@@ -129,6 +130,10 @@ double fraction(const Axis& axis, long i) {
   return axis.count > 1 ? static_cast<double>(i) / static_cast<double>(axis.count - 1) : 0.5;
 }
 
+// The largest aim offset, deg: a scene's largest heading (beyond it one ulp of the heading exceeds
+// 1e-10 deg).
+constexpr double kMaxAimOffset_deg = 1e6;
+
 const char* kParameterHelp =
     "speed (cue speed, m/s), aim (degrees added to the scene's heading), tip-height and tip-side "
     "(units of R), elevation (deg)";
@@ -154,6 +159,15 @@ Axis parseAxis(const std::string& spec) {
   if (!std::isfinite(axis.start) || !std::isfinite(axis.stop) || !(axis.step > 0) ||
       !std::isfinite(axis.step) || axis.stop < axis.start) {
     return reject("it needs finite numbers with START <= STOP and STEP > 0");
+  }
+  // The bounds a scene's shot has (engine/scene.cpp), which the grid's shots bypass otherwise.
+  if (axis.name == "speed" && !(axis.start > 0 && axis.stop <= physics::kMaxCueSpeed_mps)) {
+    return reject("speeds must lie in (0, " + physics::valueText(physics::kMaxCueSpeed_mps) +
+                  "] m/s, as a scene's");
+  }
+  if (axis.name == "aim" && !(std::abs(axis.start) <= kMaxAimOffset_deg &&
+                              std::abs(axis.stop) <= kMaxAimOffset_deg)) {
+    return reject("aim offsets must lie in [-1e6, 1e6] deg, as a scene's heading");
   }
   axis.count =
       static_cast<long>(std::floor((axis.stop - axis.start) / axis.step + kGridEndSlack_steps)) + 1;
