@@ -202,6 +202,18 @@ Eigen::Vector2d JsonReader::point(const std::string& key) const {
   return {v[0].get<double>(), v[1].get<double>()};
 }
 
+std::vector<double> JsonReader::finiteNumbers(const std::string& key, std::size_t count) const {
+  const nlohmann::json& v = value(key);
+  const std::string allowed = "it must be an array of " + std::to_string(count) + " finite numbers";
+  if (!v.is_array() || v.size() != count) reject(key, allowed);
+  std::vector<double> numbers;
+  for (const nlohmann::json& item : v) {
+    if (!item.is_number() || !std::isfinite(item.get<double>())) reject(key, allowed);
+    numbers.push_back(item.get<double>());
+  }
+  return numbers;
+}
+
 std::vector<std::string> JsonReader::keys() const {
   std::vector<std::string> names;
   for (const auto& item : object_.items()) names.push_back(item.key());

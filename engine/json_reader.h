@@ -41,6 +41,8 @@ class JsonReader {
   bool has(const std::string& key) const;
   // A JSON array of two finite numbers, such as a position [x, y].
   Eigen::Vector2d point(const std::string& key) const;
+  // A JSON array of exactly `count` finite numbers.
+  std::vector<double> finiteNumbers(const std::string& key, std::size_t count) const;
   // The object's keys (sorted: nlohmann::json keeps objects ordered by key).
   std::vector<std::string> keys() const;
 

@@ -163,6 +163,28 @@ status=0
 "$baize" stress --replay "$work/bad.json" >/dev/null 2>"$work/err.txt" || status=$?
 [[ $status == 2 ]] || fail "a replay file with an unknown table exited $status, want 2"
 grep -q "table = \"billiards\" is not allowed" "$work/err.txt" || fail "bad table: $(cat "$work/err.txt")"
+# A state file is read strictly: an unknown key in a ball, an unknown kind, an empty ball list.
+python3 - "$work" <<'PY'
+import json, sys
+base = {"format": "baize stress state", "table": "pool-9ft", "max_events": 1000, "seed": 1,
+        "shot": 3, "kind": "random",
+        "balls": [{"position": [0, 0], "velocity": [1, 0, 0], "angular_velocity": [0, 0, 0]}]}
+bad = {"ballkey": ("balls", 0, "spin", 1), "kind": ("kind", "x"), "empty": ("balls", [])}
+for name, edit in bad.items():
+    d = json.loads(json.dumps(base))
+    if len(edit) == 4:
+        d[edit[0]][edit[1]][edit[2]] = edit[3]
+    else:
+        d[edit[0]] = edit[1]
+    json.dump(d, open(f"{sys.argv[1]}/state-{name}.json", "w"))
+PY
+for case in "ballkey:balls\[0\].spin = 1 is not allowed" "kind:kind = \"x\" is not allowed" \
+  "empty:balls = \[\] is not allowed"; do
+  status=0
+  "$baize" stress --replay "$work/state-${case%%:*}.json" >/dev/null 2>"$work/err.txt" || status=$?
+  [[ $status == 2 ]] || fail "state ${case%%:*} exited $status, want 2"
+  grep -q -- "${case#*:}" "$work/err.txt" || fail "state ${case%%:*}: $(cat "$work/err.txt")"
+done
 # A seed is a whole number >= 0: "-1" is refused, not read as 2^64 - 1 (the same check serves the
 # --seed of check, sweep and plan).
 status=0

@@ -119,6 +119,12 @@ struct Replay {
   std::vector<BallState> balls;
 };
 
+// Three finite numbers [x, y, z] under `key`.
+Eigen::Vector3d vector3(const engine::JsonReader& object, const std::string& key) {
+  const std::vector<double> numbers = object.finiteNumbers(key, 3);
+  return {numbers[0], numbers[1], numbers[2]};
+}
+
 Replay loadReplay(const std::string& path) {
   const nlohmann::json document = engine::JsonReader::parseFile(path);
   Replay replay;
@@ -152,19 +158,22 @@ Replay loadReplay(const std::string& path) {
   }
   replay.params = replay.table.params;
   replay.params.max_events = state.integer("max_events", 1, 2147483647);
-  for (const nlohmann::json& b : document.at("balls")) {
+  // The keys written for information only must still be what the program writes.
+  if (state.has("seed") && !(document["seed"].is_number_unsigned())) {
+    state.reject("seed", "it must be a whole number >= 0");
+  }
+  if (state.has("shot") && !(document["shot"].is_number_unsigned())) {
+    state.reject("shot", "it must be a whole number >= 0");
+  }
+  if (state.has("kind") && !isStressShotKindName(state.text("kind"))) {
+    state.reject("kind", "it must name a kind of stress shot, as the program writes it");
+  }
+  for (const engine::JsonReader& ball : state.objectArray("balls")) {
+    ball.requireExactKeys({"position", "velocity", "angular_velocity"});
     BallState s;
-    try {
-      s.position = {b.at("position").at(0).get<double>(), b.at("position").at(1).get<double>()};
-      for (int k = 0; k < 3; ++k) {
-        s.velocity[k] = b.at("velocity").at(k).get<double>();
-        s.angular_velocity[k] = b.at("angular_velocity").at(k).get<double>();
-      }
-    } catch (const nlohmann::json::exception&) {
-      state.reject("balls",
-                   "a list of {position: [x, y], velocity: [x, y, z], angular_velocity: "
-                   "[x, y, z]} in m, m/s and rad/s");
-    }
+    s.position = ball.point("position");
+    s.velocity = vector3(ball, "velocity");
+    s.angular_velocity = vector3(ball, "angular_velocity");
     replay.balls.push_back(s);
   }
   return replay;

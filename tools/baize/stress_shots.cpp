@@ -550,6 +550,13 @@ StressShot ShotMaker::make(StressShotKind kind, int max_balls) {
 
 }  // namespace
 
+bool isStressShotKindName(const std::string& name) {
+  for (int k = 0; k < static_cast<int>(StressShotKind::Count); ++k) {
+    if (name == stressShotKindName(static_cast<StressShotKind>(k))) return true;
+  }
+  return false;
+}
+
 const char* stressShotKindName(StressShotKind kind) {
   switch (kind) {
     case StressShotKind::Random:

@@ -40,6 +40,8 @@ enum class StressShotKind {
 };
 
 const char* stressShotKindName(StressShotKind kind);
+// Whether `name` is a kind's name (stressShotKindName).
+bool isStressShotKindName(const std::string& name);
 
 // Shot k's kind: the kinds take turns.
 StressShotKind stressShotKindOf(long shot);
