@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -33,6 +34,23 @@ std::string jsonText(const nlohmann::json& value) {
 }
 
 std::string typeName(const nlohmann::json& value) { return value.type_name(); }
+
+// A key as a message shows it in a path: control characters (a NUL would end the message) as
+// \uXXXX, and a long key cut, saying how long it was.
+std::string keyText(const std::string& key) {
+  std::string text;
+  for (const char c : key) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned char>(c));
+      text += escaped;
+    } else {
+      text += c;
+    }
+  }
+  if (text.size() <= kMaxQuotedChars) return text;
+  return text.substr(0, kMaxQuotedChars) + "... (" + std::to_string(key.size()) + " characters)";
+}
 
 // A parser callback that refuses a key appearing twice in one object, naming its path in the
 // document ("balls.cue", "cases[2].scene.shot"). It follows the parse with a stack of the open
@@ -94,7 +112,7 @@ class DuplicateKeyCheck {
     std::string text;
     for (const Container& c : open_) {
       if (c.is_object) {
-        text += (text.empty() ? "" : ".") + c.current_key;
+        text += (text.empty() ? "" : ".") + keyText(c.current_key);
       } else {
         text += "[" + std::to_string(c.index) + "]";
       }
@@ -158,11 +176,11 @@ nlohmann::json JsonReader::parseText(const std::string& text, const std::string&
 }
 
 std::string JsonReader::where(const std::string& key) const {
-  return source_ + ": " + (path_.empty() ? key : path_ + "." + key);
+  return source_ + ": " + (path_.empty() ? keyText(key) : path_ + "." + keyText(key));
 }
 
 std::string JsonReader::keyAndValue(const std::string& key) const {
-  return (path_.empty() ? key : path_ + "." + key) + " = " + jsonText(value(key));
+  return (path_.empty() ? keyText(key) : path_ + "." + keyText(key)) + " = " + jsonText(value(key));
 }
 
 void JsonReader::reject(const std::string& key, const std::string& allowed) const {
@@ -230,14 +248,14 @@ const nlohmann::json& JsonReader::value(const std::string& key) const {
 
 JsonReader JsonReader::object(const std::string& key) const {
   if (!value(key).is_object()) reject(key, "it must be a JSON object, not " + typeName(value(key)));
-  return JsonReader(value(key), source_, path_.empty() ? key : path_ + "." + key);
+  return JsonReader(value(key), source_, path_.empty() ? keyText(key) : path_ + "." + keyText(key));
 }
 
 std::vector<JsonReader> JsonReader::objectArray(const std::string& key) const {
   const nlohmann::json& array = value(key);
   if (!array.is_array() || array.empty()) reject(key, "it must be a non-empty array of objects");
   std::vector<JsonReader> objects;
-  const std::string base = path_.empty() ? key : path_ + "." + key;
+  const std::string base = path_.empty() ? keyText(key) : path_ + "." + keyText(key);
   for (std::size_t i = 0; i < array.size(); ++i) {
     objects.emplace_back(array[i], source_, base + "[" + std::to_string(i) + "]");
   }

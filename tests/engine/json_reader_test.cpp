@@ -144,5 +144,19 @@ TEST(JsonReader, MessagesQuoteValuesShortAndSafe) {
                   "doc: bytes = \"a\xef\xbf\xbd\" is not allowed");
 }
 
+// Keys in a message's path show control characters escaped (a NUL ended the message there) and a
+// long key cut.
+TEST(JsonReader, MessagesShowKeysEscapedAndShort) {
+  nlohmann::json document;
+  document[std::string("a\0b", 3)] = 1;
+  document[std::string(300, 'k')] = 2;
+  const JsonReader reader(document, "doc");
+  const std::string nul = invalidArgumentMessage([&] { reader.reject(std::string("a\0b", 3), "no"); });
+  EXPECT_MENTIONS(nul, "doc: a\\u0000b = 1 is not allowed: no");
+  const std::string long_key =
+      invalidArgumentMessage([&] { reader.reject(std::string(300, 'k'), "no"); });
+  EXPECT_MENTIONS(long_key, "... (300 characters) = 2 is not allowed: no");
+}
+
 }  // namespace
 }  // namespace baize::engine
