@@ -231,7 +231,13 @@ SuiteCase readCase(const nlohmann::json& raw, const std::string& source, int ind
   try {
     result.scene = sceneFromJson(scene_document, scene_source);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(reader.where("scene") + ": " + e.what());
+    // A refused shot key is the case's own when the case gives the shot.
+    const std::string message = e.what(), shot_prefix = scene_source + ": shot";
+    if (reader.has("shot") && message.rfind(shot_prefix, 0) == 0) {
+      throw std::invalid_argument(reader.where("shot") + message.substr(shot_prefix.size()) +
+                                  " (the case's shot replaces the scene's whole)");
+    }
+    throw std::invalid_argument(reader.where("scene") + ": " + message);
   }
   const JsonReader expect = reader.object("expect");
   if (expect.keys().empty()) reader.reject("expect", "an object with at least one expectation");

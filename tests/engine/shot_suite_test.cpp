@@ -87,8 +87,14 @@ TEST(SuiteParsing, CaseLevelErrorsNameTheCase) {
   nlohmann::json document = oneCase(R"({"no_foul": true})");
   document["cases"][0]["shot"] = {{"aim_at", "1"}, {"speed_mps", -1}};
   std::string message = suiteError(document);
-  EXPECT_MENTIONS(message, "case \"straight\".scene");
-  EXPECT_MENTIONS(message, "speed_mps");
+  EXPECT_MENTIONS(message, "case \"straight\".shot.speed_mps = -1 is not allowed");
+
+  // A bad key in the case's own shot is named there, not in the scene.
+  document = oneCase(R"({"no_foul": true})");
+  document["cases"][0]["shot"] = {{"speed_mps", 99}};
+  message = suiteError(document);
+  EXPECT_MENTIONS(message, "drills.json: case \"straight\".shot.");
+  EXPECT_MENTIONS(message, "(the case's shot replaces the scene's whole)");
 
   document = oneCase(R"({"no_foul": true})");
   document["cases"][0]["scene"] = 3;

@@ -126,6 +126,13 @@ err=$("$baize" check "$root/assets/suites/positional-drills.json" --noise -3 2>&
 set -e
 [[ $status == 2 ]] || fail "--noise -3 must exit 2, got $status"
 grep -q -- "--noise" <<<"$err" || fail "message: $err"
+# --png must be a directory: a file there is refused, naming the path given.
+touch "$work/a-file"
+set +e
+err=$("$baize" check "$root/assets/suites/positional-drills.json" --png "$work/a-file" 2>&1); status=$?
+set -e
+[[ $status == 2 ]] || fail "--png FILE must exit 2, got $status"
+grep -q -- "--png = $work/a-file is not allowed: it must be a directory" <<<"$err" || fail "message: $err"
 # Each sigma flag is named as it was given, in its own units.
 for flag in --sigma-tip-mm --sigma-elevation-deg --sigma-aim-deg --sigma-speed-mps; do
   set +e

@@ -135,6 +135,13 @@ int runCheck(const CheckFlags& flags) {
   const engine::Suite suite = engine::loadSuite(flags.suite);
   std::unique_ptr<PngPainter> painter;
   if (!flags.png_dir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(flags.png_dir, error);
+    if (!std::filesystem::is_directory(flags.png_dir, error)) {
+      throw UsageError("--png = " + flags.png_dir +
+                       " is not allowed: it must be a directory (made if missing) for the "
+                       "pictures of the failing cases");
+    }
     checkOutputPath("--png", (std::filesystem::path(flags.png_dir) / "probe.png").string());
     painter = std::make_unique<PngPainter>();
   }
