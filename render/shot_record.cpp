@@ -109,7 +109,13 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
       reject(source, item.key(), "an unknown key is not allowed in a result of 'baize simulate --json'");
     }
   }
-  const engine::Scene scene = engine::loadScene(scene_path);
+  const engine::Scene scene = [&] {
+    try {
+      return engine::loadScene(scene_path);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(source + ": the result's scene: " + e.what());
+    }
+  }();
   if (result.contains("table") &&
       !(result["table"].is_string() && result["table"].get<std::string>() == scene.table.name)) {
     reject(source, "table",

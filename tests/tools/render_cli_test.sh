@@ -88,7 +88,8 @@ expect_refused "--png" "$work/x.png" render "$scene"
 expect_refused "--width" "$work/y.png" simulate "$scene" --png "$work/y.png" --width 0
 expect_refused "--width" "$work/y.png" simulate "$scene" --width 0  # checked without a picture too
 echo '{"scene": "nowhere.json", "trajectories": {}}' >"$work/bad-result.json"
-expect_refused "nowhere.json" "$work/x.png" render "$work/bad-result.json" --png "$work/x.png"
+expect_refused "bad-result.json: the result.s scene: nowhere.json" "$work/x.png" render "$work/bad-result.json" \
+  --png "$work/x.png"
 # A result edited by hand: one change each to the saved result above, each refused naming the key.
 edit_result() {  # edit_result NAME PYTHON-STATEMENT-ON-r
   python3 - "$work/result.json" "$work/$1.json" "$2" <<'PY'
