@@ -41,8 +41,8 @@ void writeCharts(const std::vector<NamedChart>& charts, const std::string& direc
   }
 }
 
-// Chart and size errors from render/ name the chart and the series; say which flag or file.
-// (CSV errors already name their file.)
+// Chart and size errors from render/ name the chart, the series or the axis; say which flag or
+// file.
 void withContext(const std::string& context, const std::function<void()>& body) {
   try {
     body();
@@ -50,9 +50,10 @@ void withContext(const std::string& context, const std::function<void()>& body) 
     const std::string message = rejected.what();
     if (message.rfind("chart width", 0) == 0) throw UsageError(message + " (set by --width)");
     if (message.rfind("chart height", 0) == 0) throw UsageError(message + " (set by --height)");
-    // Messages about a chart's data name the chart, not the file it came from.
-    if (message.rfind("chart '", 0) == 0) throw UsageError(context + ": " + message);
-    throw;
+    // CSV errors name their file already; messages about a chart's data or axes name the chart or
+    // the axis, not the file the data came from.
+    if (message.rfind(context, 0) == 0) throw;
+    throw UsageError(context + ": " + message);
   }
 }
 
