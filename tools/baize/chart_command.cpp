@@ -95,7 +95,9 @@ void addChartCommand(CLI::App& parent) {
       "From a `baize bench cushion --csv` table write a log-log chart of median time per impact "
       "against largest error, one line per solver");
   bench->add_option("CSV", bench_flags->input, "the bench table")->required();
-  bench->add_option("--png", bench_flags->png_path, "the PNG file to write")->required();
+  bench->add_option("--png", bench_flags->png_path, "the PNG file to write")
+      ->required()
+      ->check(notEmpty());
   addSizeFlags(bench, *bench_flags);
   bench->callback([bench_flags] {
     const ChartFlags& flags = *bench_flags;
@@ -115,7 +117,9 @@ void addChartCommand(CLI::App& parent) {
       "From a `baize bench accuracy --csv` table write a log-log chart of position error against "
       "median run time per shot, one line per engine (an error of 0 drawn on a floor)");
   accuracy->add_option("CSV", accuracy_flags->input, "the bench table")->required();
-  accuracy->add_option("--png", accuracy_flags->png_path, "the PNG file to write")->required();
+  accuracy->add_option("--png", accuracy_flags->png_path, "the PNG file to write")
+      ->required()
+      ->check(notEmpty());
   addSizeFlags(accuracy, *accuracy_flags);
   accuracy->callback([accuracy_flags] {
     const ChartFlags& flags = *accuracy_flags;
