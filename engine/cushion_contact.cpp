@@ -68,7 +68,8 @@ physics::BallVelocity resolveCushionContact(const SimulationParams& params,
             "physics.cushion.paper_steps = " + std::to_string(params.cushion_paper_steps) +
             ": the paper scheme made a cushion impact gain energy (" +
             physics::valueText(before_J) + " J in, " + physics::valueText(after_J) +
-            " J out): that is too few increments for this impact; use more, or the exact model");
+            " J out), its first-order error: more increments make it smaller, and the exact model "
+            "has none");
       }
       return after;
     }

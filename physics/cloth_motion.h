@@ -36,14 +36,14 @@ ClothParams poolCloth();
 // measured 0.124-0.126), mu_sp so that spin falls at 22 rad/s^2.
 ClothParams snookerCloth();
 
-// Throws std::invalid_argument naming the value and the allowed range unless every parameter is
-// finite, R and g are > 0, 0 < mu_s < 1, 0 < mu_r < mu_s (rolling resistance below sliding
-// friction) and 0 < mu_sp < 1.
 // The smallest cloth friction coefficient accepted: a ball at the largest speed accepted (1e3 m/s)
 // then stops within about 1e8 s, well inside the range the root finder solves event times in;
 // 1e-300 put a state's end at 1e300 s, beyond it.
 inline constexpr double kMinClothFriction = 1e-6;
 
+// Throws std::invalid_argument naming the value and the allowed range unless every parameter is
+// finite, R and g are > 0, kMinClothFriction <= mu_s < 1, kMinClothFriction <= mu_r < mu_s
+// (rolling resistance below sliding friction) and kMinClothFriction <= mu_sp < 1.
 void validateClothParams(const ClothParams& params);
 
 // Deceleration of |w_z|, rad/s^2: 5 mu_sp g / (2R).

@@ -506,7 +506,7 @@ void writeChartPng(const LineChart& chart, const std::string& path, int width_px
     throw std::runtime_error("cannot write the chart '" + path + "': " + what + reason);
   };
   errno = 0;
-  std::ofstream out(written, std::ios::binary | std::ios::trunc);
+  std::ofstream out(written, std::ios::binary | (target.stream ? std::ios::app : std::ios::trunc));
   if (!out) fail("cannot create '" + written + "'");
   out.write(png.data(), static_cast<std::streamsize>(png.size()));
   out.close();

@@ -68,7 +68,7 @@ void writePng(const Image& image, const std::string& path) {
   const WholeFileTarget target = wholeFileTarget(path);
   const std::string written = target.stream ? target.path : temporaryFor(target);
   errno = 0;
-  std::FILE* file = std::fopen(written.c_str(), "wb");
+  std::FILE* file = std::fopen(written.c_str(), target.stream ? "ab" : "wb");
   if (file == nullptr) {
     throw std::runtime_error("cannot create '" + written + "': " + std::strerror(errno));
   }

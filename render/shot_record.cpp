@@ -24,6 +24,15 @@ const char* const kResultKeys[] = {"scene",   "scene_path", "table",  "end_time_
   throw std::invalid_argument(source + ": " + key + ": " + what);
 }
 
+// A value as a message quotes it: JSON text, bytes that are not UTF-8 replaced, cut after 200
+// characters (a huge value would drown the message).
+std::string quoted(const nlohmann::json& value) {
+  constexpr std::size_t kMaxQuotedChars = 200;
+  const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (text.size() <= kMaxQuotedChars) return text;
+  return text.substr(0, kMaxQuotedChars) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
 const nlohmann::json& member(const nlohmann::json& object, const char* key,
                              const std::string& source, const std::string& path) {
   if (!object.is_object() || !object.contains(key)) {
@@ -36,7 +45,7 @@ double number(const nlohmann::json& object, const char* key, const std::string& 
               const std::string& path) {
   const nlohmann::json& value = member(object, key, source, path);
   if (!value.is_number() || !std::isfinite(value.get<double>())) {
-    reject(source, path + key, "value " + value.dump() + " is not allowed: it must be a number");
+    reject(source, path + key, "value " + quoted(value) + " is not allowed: it must be a number");
   }
   return value.get<double>();
 }
@@ -53,7 +62,7 @@ Eigen::Matrix<double, N, 1> vector(const nlohmann::json& object, const char* key
   }
   if (!valid) {
     reject(source, path + key,
-           "value " + value.dump() + " is not allowed: it must be " + std::to_string(N) +
+           "value " + quoted(value) + " is not allowed: it must be " + std::to_string(N) +
                " finite numbers");
   }
   return v;
@@ -100,7 +109,7 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
     scene_path = result["scene_path"].get<std::string>();
   } else {
     const nlohmann::json& scene = member(result, "scene", source, "");
-    if (!scene.is_string()) reject(source, "scene", "value " + scene.dump() + " is not a path");
+    if (!scene.is_string()) reject(source, "scene", "value " + quoted(scene) + " is not a path");
     scene_path = scene.get<std::string>();
   }
   for (const auto& item : result.items()) {
@@ -119,7 +128,7 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
   if (result.contains("table") &&
       !(result["table"].is_string() && result["table"].get<std::string>() == scene.table.name)) {
     reject(source, "table",
-           "value " + result["table"].dump() + " is not allowed: the scene '" + scene_path +
+           "value " + quoted(result["table"]) + " is not allowed: the scene '" + scene_path +
                "' is on table '" + scene.table.name + "'");
   }
   ShotRecord record;
@@ -140,7 +149,7 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
     const std::string path = "final[" + std::to_string(i) + "].";
     const nlohmann::json& id = member(final_balls[i], "id", source, path);
     if (!id.is_string() || !scene.ball_set.contains(id.get<std::string>())) {
-      reject(source, path + "id", "value " + id.dump() + " is not a ball of the scene's set");
+      reject(source, path + "id", "value " + quoted(id) + " is not a ball of the scene's set");
     }
     record.ball_ids.push_back(id.get<std::string>());
     const std::string pieces_path = "trajectories." + id.get<std::string>();
@@ -158,7 +167,7 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
       if (std::abs(piece.state.position.x()) > scene.table.length_m / 2 + kBeyondBed_m ||
           std::abs(piece.state.position.y()) > scene.table.width_m / 2 + kBeyondBed_m) {
         reject(source, p + "position_m",
-               "value " + pieces[k]["position_m"].dump() +
+               "value " + quoted(pieces[k]["position_m"]) +
                    " is not allowed: it is off the table (beyond its bed by more than 0.5 m)");
       }
       if (piece.start_time_s > record.end_time_s) {
@@ -190,7 +199,7 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
     for (std::size_t i = 0; i < record.ball_ids.size(); ++i) {
       if (id.is_string() && id.get<std::string>() == record.ball_ids[i]) return static_cast<int>(i);
     }
-    reject(source, path, "value " + id.dump() + " is not a ball of this result");
+    reject(source, path, "value " + quoted(id) + " is not a ball of this result");
   };
   if (result.contains("events")) {
     const nlohmann::json& events = result["events"];

@@ -1,20 +1,23 @@
 // Output files written whole: the bytes go to a temporary beside the target, renamed over it only
 // once complete, so a reader never sees half a file and a failure leaves the old one. A symbolic
-// link is followed (the file it names is replaced; the link stays). A device, FIFO or socket
-// (/dev/stdout, a named pipe) cannot be replaced that way and is written straight, as a stream.
+// link is followed (the file it names is replaced; the link stays). A device, a named pipe or an
+// open descriptor (/dev/stdout, /dev/fd/N) cannot be replaced that way and is written straight,
+// appended to (so `--json /dev/stdout >> log` keeps what the log held).
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace baize::render {
 
 struct WholeFileTarget {
   std::string path;     // the file to replace (the link's target for a symbolic link), or the stream
-  bool stream = false;  // a device, FIFO or socket: written straight, no temporary
+  bool stream = false;  // a device, pipe or descriptor: written straight (appended), no temporary
 };
 
-// Where an output named `path` goes. Throws std::invalid_argument when `path` is a directory (an
-// output must name a file).
+// Where an output named `path` goes. Throws std::invalid_argument saying why (without the path)
+// when it is a directory, a loop of symbolic links, or a named pipe no program reads (writing
+// would wait forever).
 WholeFileTarget wholeFileTarget(const std::string& path);
 
 // The temporary a whole-file write of `target` uses.

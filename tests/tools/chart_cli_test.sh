@@ -168,6 +168,9 @@ grep -q ',0$' "$work/zero.csv" || fail "test setup: no zero error written"
 expect_error 2 "$work/zero.csv: chart 'Cushion solvers" chart bench-cushion "$work/zero.csv" --png "$work/zero.png"
 grep -qF "series 'exact'" "$work/stderr" || fail "the log-axis message does not name the series"
 grep -qF "logarithmic" "$work/stderr" || fail "the log-axis message does not say why"
+# A directory as the output is refused before any work, naming --png.
+expect_error 2 "--png = $work is not allowed: it is a directory" \
+  chart bench-cushion "$work/bench.csv" --png "$work"
 # A value too small for a log axis: the message names the file too.
 sed 's/^exact,tol=1e-06,\([^,]*\),.*/exact,tol=1e-06,\1,5e-324/' "$work/bench.csv" >"$work/tiny.csv"
 expect_error 2 "$work/tiny.csv: log axis low end = 5e-324 is not allowed" \

@@ -239,6 +239,25 @@ msg=$("$baize" simulate "$scene" --json '' 2>&1 >/dev/null); status=$?
 set -e
 [[ $status -eq 2 ]] || fail "--json '' exited $status, expected 2"
 grep -qF -- "--json: an empty value is not allowed" <<<"$msg" || fail "message: $msg"
+# /dev/stdout is written straight: into a pipe, and appended to a file the shell opened (what the
+# file held is kept).
+piped=$("$baize" simulate "$scene" --json /dev/stdout | cat) || fail "--json /dev/stdout into a pipe exited $?"
+grep -q '"events"' <<<"$piped" || fail "--json /dev/stdout wrote nothing into the pipe"
+echo kept >"$work/log"
+"$baize" simulate "$scene" --json /dev/stdout >>"$work/log" || fail "--json /dev/stdout >> log exited $?"
+[[ "$(head -1 "$work/log")" == kept ]] || fail "--json /dev/stdout replaced the log"
+grep -q '"events"' "$work/log" || fail "--json /dev/stdout wrote nothing into the log"
+# A named pipe that no program reads is refused (writing would wait forever); a loop of links too.
+mkfifo "$work/pipe"
+ln -s loop-b "$work/loop-a"
+ln -s loop-a "$work/loop-b"
+for target in pipe:"it is a named pipe that no program reads" loop-a:"it is a loop of symbolic links"; do
+  set +e
+  msg=$(timeout 20 "$baize" simulate "$scene" --json "$work/${target%%:*}" 2>&1 >/dev/null); status=$?
+  set -e
+  [[ $status -eq 2 ]] || fail "--json ${target%%:*} exited $status, expected 2"
+  grep -qF "${target#*:}" <<<"$msg" || fail "message: $msg"
+done
 if [[ -w /dev/full ]]; then
   set +e
   msg=$("$baize" simulate "$scene" 2>&1 >/dev/full); status=$?

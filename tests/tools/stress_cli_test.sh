@@ -185,11 +185,14 @@ for case in "ballkey:balls\[0\].spin = 1 is not allowed" "kind:kind = \"x\" is n
   [[ $status == 2 ]] || fail "state ${case%%:*} exited $status, want 2"
   grep -q -- "${case#*:}" "$work/err.txt" || fail "state ${case%%:*}: $(cat "$work/err.txt")"
 done
-# A seed is a whole number >= 0: "-1" is refused, not read as 2^64 - 1 (the same check serves the
-# --seed of check, sweep and plan).
+# A seed is a whole number in [0, 2^64 - 1]: "-1" is refused, not read as 2^64 - 1, and a larger
+# number is refused, not wrapped (the same check serves the --seed of check, sweep and plan).
+status=0
+"$baize" stress --shots 1 --seed 18446744073709551616 >/dev/null 2>"$work/err.txt" || status=$?
+[[ $status == 2 ]] || fail "--seed 2^64 exited $status, want 2"
 status=0
 "$baize" stress --shots 1 --seed -1 >/dev/null 2>"$work/err.txt" || status=$?
 [[ $status == 2 ]] || fail "--seed -1 exited $status, want 2"
-grep -q -- "--seed: -1 is not allowed: it must be a whole number >= 0" "$work/err.txt" ||
+grep -q -- "--seed: -1 is not allowed: it must be a whole number in \[0, 2^64 - 1\]" "$work/err.txt" ||
   fail "--seed -1: $(cat "$work/err.txt")"
 echo "stress CLI checks passed"

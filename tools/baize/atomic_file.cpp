@@ -10,12 +10,6 @@
 #include "tools/baize/cli_errors.h"
 
 namespace baize::tools {
-namespace {
-
-// What an output path must be when it names a directory.
-constexpr const char* kNotADirectory = "it is a directory; an output must name a file";
-
-}  // namespace
 
 void checkOutputPath(const std::string& flag, const std::string& path) {
   const std::filesystem::path file(path);
@@ -24,8 +18,8 @@ void checkOutputPath(const std::string& flag, const std::string& path) {
   render::WholeFileTarget target;
   try {
     target = render::wholeFileTarget(path);
-  } catch (const std::invalid_argument&) {
-    throw UsageError(flag + " = " + path + " is not allowed: " + kNotADirectory);
+  } catch (const std::invalid_argument& refused) {
+    throw UsageError(flag + " = " + path + " is not allowed: " + refused.what());
   }
   if (target.stream) return;  // written straight: nothing to create beside it
   const std::string probe = render::temporaryFor(target);
@@ -43,12 +37,12 @@ AtomicFile::AtomicFile(std::string path, std::string origin)
     : path_(std::move(path)), origin_(std::move(origin)) {
   try {
     target_ = render::wholeFileTarget(path_);
-  } catch (const std::invalid_argument&) {
-    throw UsageError(origin_ + " = " + path_ + " is not allowed: " + kNotADirectory);
+  } catch (const std::invalid_argument& refused) {
+    throw UsageError(origin_ + " = " + path_ + " is not allowed: " + refused.what());
   }
   temporary_path_ = target_.stream ? target_.path : render::temporaryFor(target_);
   errno = 0;
-  out_.open(temporary_path_, std::ios::out | std::ios::trunc);
+  out_.open(temporary_path_, std::ios::out | (target_.stream ? std::ios::app : std::ios::trunc));
   if (!out_) fail("cannot create '" + temporary_path_ + "'");
 }
 

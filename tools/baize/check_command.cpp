@@ -229,7 +229,7 @@ void addCheckCommand(CLI::App& parent) {
                       "also run N samples of each case with execution error and report the "
                       "probability of each expectation (pass/fail stays the noise-free shot's)");
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
-      ->check(notNegative());
+      ->check(unsigned64());
   command->add_option("--sigma-tip-mm", flags->tip_sigma_mm,
                       "execution error on each tip offset, mm (default 0.5)");
   command->add_option("--sigma-elevation-deg", flags->noise.elevation_sigma_deg,

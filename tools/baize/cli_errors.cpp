@@ -38,15 +38,23 @@ int runReportingErrors(const std::string& command, const std::function<void()>& 
   }
 }
 
-CLI::Validator notNegative() {
+CLI::Validator unsigned64() {
   return CLI::Validator(
       [](std::string& text) {
-        return text.find_first_not_of(" \t") != std::string::npos &&
-                       text[text.find_first_not_of(" \t")] == '-'
-                   ? text + " is not allowed: it must be a whole number >= 0"
-                   : std::string();
+        // An optional '+', then digits, at most 2^64 - 1 (CLI11 would wrap "-1" and accept more).
+        std::string digits = text;
+        digits.erase(0, digits.find_first_not_of(" \t"));
+        if (!digits.empty() && digits[0] == '+') digits.erase(0, 1);
+        const std::string largest = "18446744073709551615";
+        const bool whole = !digits.empty() &&
+                           digits.find_first_not_of("0123456789") == std::string::npos;
+        if (whole) digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+        const bool fits = whole && (digits.size() < largest.size() ||
+                                    (digits.size() == largest.size() && digits <= largest));
+        return fits ? std::string()
+                    : text + " is not allowed: it must be a whole number in [0, 2^64 - 1]";
       },
-      "NOT NEGATIVE");
+      "");
 }
 
 CLI::Validator notEmpty() {

@@ -33,9 +33,9 @@ void requireFiniteFlag(const std::string& flag, double value);
 // Returns 0 when the body returns normally and standard output took everything it printed.
 int runReportingErrors(const std::string& command, const std::function<void()>& body);
 
-// A check for flags read into unsigned integers (seeds), which would otherwise take "-1" as 2^64 -
-// 1: the value must not start with a minus sign.
-CLI::Validator notNegative();
+// A check for flags read into 64-bit unsigned integers (seeds), which CLI11 would otherwise take
+// "-1" as 2^64 - 1 and larger values wrapped: a whole number in [0, 2^64 - 1].
+CLI::Validator unsigned64();
 // A check for path and text flags whose empty value would otherwise read as "not given".
 CLI::Validator notEmpty();
 

@@ -211,7 +211,7 @@ void addPlanCommand(CLI::App& parent) {
   command->add_option("--noise-samples", flags->noise_samples,
                       "fresh noisy samples to re-estimate each reported shot (default 1000)");
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
-      ->check(notNegative());
+      ->check(unsigned64());
   command->add_option("--report", flags->report, "shots reported (default 3)");
   command->add_option("--png", flags->png_path, "draw the best shot with its region here (PNG)")
       ->check(notEmpty());

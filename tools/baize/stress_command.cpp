@@ -360,7 +360,7 @@ void addStressCommand(CLI::App& parent) {
   command
       ->add_option("--seed", flags->seed,
                    "random seed (shot k uses a generator seeded from it and k)")
-      ->check(notNegative())
+      ->check(unsigned64())
       ->capture_default_str();
   command->add_option("--balls", flags->max_balls, "most balls in a shot (racks excepted)")
       ->capture_default_str();
@@ -379,7 +379,8 @@ void addStressCommand(CLI::App& parent) {
       ->check(notEmpty());
   command->add_option(
       "--replay", flags->replay_path,
-      "check the one shot of a reproduction file (a scene or a state file) instead");
+      "check the one shot of a reproduction file (a scene or a state file) instead")
+      ->check(notEmpty());
   command->callback([flags] {
     if (const int status = runReportingErrors("stress", [&] { runStress(*flags); })) {
       throw CLI::RuntimeError(status);

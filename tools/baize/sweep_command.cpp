@@ -299,13 +299,14 @@ void addSweepCommand(CLI::App& parent) {
       ->check(notEmpty());
   command->add_option("--object", flags->object,
                       "the ball whose pocketing object_pocketed reports (default: any ball but "
-                      "the cue ball)");
+                      "the cue ball)")
+      ->check(notEmpty());
   command->add_option("--noise", flags->noise_samples,
                       "also run N samples per point with the default execution error and write "
                       "pocketing probabilities and the spread of the cue ball's finishing "
                       "positions");
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
-      ->check(notNegative());
+      ->check(unsigned64());
   command
       ->add_option("--png", flags->png_path,
                    "also draw the position map here: finishing positions coloured by the "
