@@ -264,5 +264,9 @@ if [[ -w /dev/full ]]; then
   set -e
   [[ $status -eq 1 ]] || fail "simulate > /dev/full exited $status, expected 1"
   grep -qF "standard output could not be written" <<<"$msg" || fail "message: $msg"
+  set +e
+  "$baize" --help >/dev/full 2>/dev/null; status=$?
+  set -e
+  [[ $status -eq 1 ]] || fail "--help > /dev/full exited $status, expected 1"
 fi
 echo "simulate CLI: all checks passed"

@@ -45,7 +45,15 @@ int main(int argc, char** argv) {
   } catch (const CLI::RuntimeError& failed) {  // a command that ran and reported its own error
     return failed.get_exit_code();
   } catch (const CLI::ParseError& error) {
-    if (error.get_exit_code() == 0) return app.exit(error);  // --help
+    if (error.get_exit_code() == 0) {  // --help: the help text is the output, so it must arrive
+      const int status = app.exit(error);
+      std::cout.flush();
+      if (!std::cout) {
+        std::cerr << "baize: error: standard output could not be written\n";
+        return kExitFailure;
+      }
+      return status;
+    }
     std::cerr << "baize: error: " << error.what() << "\nRun 'baize --help' for usage.\n";
     return kExitUsage;
   }
