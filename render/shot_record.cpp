@@ -134,7 +134,18 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
   ShotRecord record;
   record.table = scene.table;
   record.ball_set = scene.ball_set;
-  record.cloth = engine::simulationParamsFor(scene).cloth;
+  // The cloth the shot ran with, which draws its paths: the result's own "physics" (the scene file
+  // may have changed since), read and checked as a scene's.
+  engine::SimulationParams params = engine::simulationParamsFor(scene);
+  if (result.contains("physics")) {
+    const engine::PhysicsOverrides ran =
+        engine::readPhysicsOverrides(engine::JsonReader(result.at("physics"), source, "physics"));
+    engine::applyPhysicsOverrides(ran, &params);
+    physics::CueStrikeParams cue = engine::cueStrikeParamsFor(scene);
+    engine::applyPhysicsOverrides(ran, &cue);
+    engine::validateScenePhysics(params, cue, source, "the physics the result was run with");
+  }
+  record.cloth = params.cloth;
   record.end_time_s = number(result, "end_time_s", source, "");
   if (record.end_time_s < 0) reject(source, "end_time_s", "it must be >= 0");
 

@@ -38,6 +38,21 @@ cmp -s "$work/a.png" "$work/out/deeper/break.png" || fail "render and simulate -
 (cd / && "$baize" render "$work/result.json" --png "$work/from-result.png" --width 640 --height 320 >/dev/null) ||
   fail "render of a result exited $?"
 cmp -s "$work/a.png" "$work/from-result.png" || fail "result and scene pictures differ"
+# A result draws the paths with the cloth it ran with, even after its scene file changed.
+python3 - "$scene" "$work/slow.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+s["physics"] = {"cloth": {"rolling_friction": 0.03}}
+json.dump(s, open(sys.argv[2], "w"))
+PY
+"$baize" render "$work/slow.json" --png "$work/slow.png" --width 640 --height 320 >/dev/null
+"$baize" simulate "$work/slow.json" --json "$work/slow-result.json" >/dev/null
+python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); del s["physics"]; json.dump(s, open(sys.argv[1], "w"))' \
+  "$work/slow.json"
+"$baize" render "$work/slow-result.json" --png "$work/slow-from-result.png" --width 640 --height 320 \
+  >/dev/null || fail "render of the slow result exited $?"
+cmp -s "$work/slow.png" "$work/slow-from-result.png" || fail "the result was drawn with the scene's new cloth"
+cmp -s "$work/slow.png" "$work/a.png" && fail "test setup: the slower cloth draws the same picture"
 
 # --at: a picture of the shot under way differs from the end; the angled view differs from the top.
 "$baize" render "$scene" --png "$work/at.png" --width 640 --height 320 --at 0.05 >/dev/null || fail "--at exited $?"
@@ -107,6 +122,8 @@ edit_result table 'r["table"] = "snooker-12ft"'
 expect_refused "table: value \"snooker-12ft\"" "$work/x.png" render "$work/table.json" --png "$work/x.png"
 edit_result extra 'r["trajectories"]["ghost"] = r["trajectories"]["cue"]'
 expect_refused "trajectories: it must hold exactly" "$work/x.png" render "$work/extra.json" --png "$work/x.png"
+edit_result physics 'r["physics"]["max_events"] = -1'
+expect_refused "physics.max_events = -1 is not allowed" "$work/x.png" render "$work/physics.json" --png "$work/x.png"
 edit_result late 'r["end_time_s"] = -1'
 expect_refused "end_time_s: it must be >= 0" "$work/x.png" render "$work/late.json" --png "$work/x.png"
 
