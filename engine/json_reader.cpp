@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -21,16 +21,10 @@ constexpr int kMaxDepth = 64;
 // A value quoted in a message is cut to this many characters (a huge value would drown it).
 constexpr std::size_t kMaxQuotedChars = 200;
 
-// Values as JSON text (numbers in their shortest exact form); NaN and infinities, which JSON
-// cannot hold, as "nan" and "inf". Bytes that are not UTF-8 (from a file name, say) are replaced,
-// and a long text is cut, saying how long it was.
-std::string jsonText(const nlohmann::json& value) {
-  if (value.is_number_float() && !std::isfinite(value.get<double>())) {
-    return physics::valueText(value.get<double>());
-  }
-  const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+// `text` as a message shows it: cut after kMaxQuotedChars, saying how long it was (`length`).
+std::string cutForMessage(const std::string& text, std::size_t length) {
   if (text.size() <= kMaxQuotedChars) return text;
-  return text.substr(0, kMaxQuotedChars) + "... (" + std::to_string(text.size()) + " characters)";
+  return text.substr(0, kMaxQuotedChars) + "... (" + std::to_string(length) + " characters)";
 }
 
 std::string typeName(const nlohmann::json& value) { return value.type_name(); }
@@ -48,8 +42,7 @@ std::string keyText(const std::string& key) {
       text += c;
     }
   }
-  if (text.size() <= kMaxQuotedChars) return text;
-  return text.substr(0, kMaxQuotedChars) + "... (" + std::to_string(key.size()) + " characters)";
+  return cutForMessage(text, key.size());
 }
 
 // A parser callback that refuses a key appearing twice in one object, naming its path in the
@@ -67,8 +60,7 @@ class DuplicateKeyCheck {
       case Event::array_start:
         if (depth >= kMaxDepth) {
           throw std::invalid_argument(source_ + ": objects and arrays nested more than " +
-                                      std::to_string(kMaxDepth) +
-                                      " levels deep are not allowed");
+                                      std::to_string(kMaxDepth) + " levels deep are not allowed");
         }
         startElement();
         open_.push_back({event == Event::object_start, {}, "", -1});
@@ -146,7 +138,7 @@ JsonReader::JsonReader(const nlohmann::json& object, std::string source, std::st
     : object_(object), source_(std::move(source)), path_(std::move(path)) {
   if (!object_.is_object()) {
     throw std::invalid_argument(source_ + ": " + (path_.empty() ? "the document" : path_) + " = " +
-                                jsonText(object_) + " is not allowed: it must be a JSON object");
+                                quoted(object_) + " is not allowed: it must be a JSON object");
   }
 }
 
@@ -175,16 +167,28 @@ nlohmann::json JsonReader::parseText(const std::string& text, const std::string&
   return parseStrictly(text, source, allowed);
 }
 
+std::string JsonReader::quoted(const nlohmann::json& value) {
+  if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+    return physics::valueText(value.get<double>());
+  }
+  const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return cutForMessage(text, text.size());
+}
+
+std::string JsonReader::keyPath(const std::string& key) const {
+  return path_.empty() ? keyText(key) : path_ + "." + keyText(key);
+}
+
 std::string JsonReader::where(const std::string& key) const {
-  return source_ + ": " + (path_.empty() ? keyText(key) : path_ + "." + keyText(key));
+  return source_ + ": " + keyPath(key);
 }
 
 std::string JsonReader::keyAndValue(const std::string& key) const {
-  return (path_.empty() ? keyText(key) : path_ + "." + keyText(key)) + " = " + jsonText(value(key));
+  return keyPath(key) + " = " + quoted(value(key));
 }
 
 void JsonReader::reject(const std::string& key, const std::string& allowed) const {
-  throw std::invalid_argument(where(key) + " = " + jsonText(value(key)) +
+  throw std::invalid_argument(where(key) + " = " + quoted(value(key)) +
                               " is not allowed: " + allowed);
 }
 
@@ -202,7 +206,7 @@ void JsonReader::requireKeys(std::initializer_list<const char*> required,
     const bool known =
         std::any_of(all.begin(), all.end(), [&](const char* key) { return item.key() == key; });
     if (!known) {
-      throw std::invalid_argument(where(item.key()) + " = " + jsonText(item.value()) +
+      throw std::invalid_argument(where(item.key()) + " = " + quoted(item.value()) +
                                   " is not allowed: unknown key; the keys here are " + allowed);
     }
   }
@@ -248,14 +252,14 @@ const nlohmann::json& JsonReader::value(const std::string& key) const {
 
 JsonReader JsonReader::object(const std::string& key) const {
   if (!value(key).is_object()) reject(key, "it must be a JSON object, not " + typeName(value(key)));
-  return JsonReader(value(key), source_, path_.empty() ? keyText(key) : path_ + "." + keyText(key));
+  return JsonReader(value(key), source_, keyPath(key));
 }
 
 std::vector<JsonReader> JsonReader::objectArray(const std::string& key) const {
   const nlohmann::json& array = value(key);
   if (!array.is_array() || array.empty()) reject(key, "it must be a non-empty array of objects");
   std::vector<JsonReader> objects;
-  const std::string base = path_.empty() ? keyText(key) : path_ + "." + keyText(key);
+  const std::string base = keyPath(key);
   for (std::size_t i = 0; i < array.size(); ++i) {
     objects.emplace_back(array[i], source_, base + "[" + std::to_string(i) + "]");
   }

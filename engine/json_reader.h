@@ -60,11 +60,16 @@ class JsonReader {
   // "path.key = <the value as written>", for naming a second value in a message about the first.
   std::string keyAndValue(const std::string& key) const;
 
+  // A value as messages quote it: JSON text (NaN and infinities, which JSON cannot hold, as "nan"
+  // and "inf"), bytes that are not UTF-8 replaced, cut after 200 characters saying how long it was.
+  static std::string quoted(const nlohmann::json& value);
+
   // Throws std::invalid_argument("<source>: <path.key> = <value> is not allowed: <allowed>").
   [[noreturn]] void reject(const std::string& key, const std::string& allowed) const;
 
  private:
   const nlohmann::json& value(const std::string& key) const;  // throws when the key is missing
+  std::string keyPath(const std::string& key) const;          // "path.key", escaped and cut
 
   const nlohmann::json& object_;
   std::string source_;

@@ -80,8 +80,8 @@ void readCueShot(const JsonReader& shot, physics::CueShot* cue) {
                             " (units of R), or the tip miscues");
   }
   if (!physics::cueMeetsTipPointFirst(*cue)) {
-    // Rounded down to 1 / kSuggestedElevationScale deg, so that the value suggested, used as written,
-    // is allowed.
+    // Rounded down to 1 / kSuggestedElevationScale deg, so that the value suggested, used as
+    // written, is allowed.
     const double steepest_deg =
         std::floor(physics::steepestCueElevationRad(cue->side_offset, cue->height_offset) * 180 /
                    M_PI * kSuggestedElevationScale) /
@@ -203,10 +203,11 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
   result.shot.heading_rad = heading_rad;
   readCueShot(shot, &result.shot);
   if (scene.has("physics")) result.overrides = readPhysicsOverrides(scene.object("physics"));
-  validateScenePhysics(simulationParamsFor(result), cueStrikeParamsFor(result), source,
-                       "the values of table '" + result.table.name + "' (" + result.table.source +
-                           "), ball set '" + result.ball_set.name + "' (" +
-                           result.ball_set.source + ") and this scene's physics, if any");
+  validateScenePhysics(simulationParamsFor(result), cueStrikeParamsFor(result), source, [&] {
+    return "the values of table '" + result.table.name + "' (" + result.table.source +
+           "), ball set '" + result.ball_set.name + "' (" + result.ball_set.source +
+           ") and this scene's physics, if any";
+  });
 
   // Where the balls stand: on the table, apart. Between the rails anywhere R clear of them; beyond
   // a rail's line only in a pocket's opening (a ball hanging in the jaws), inside the cushion
@@ -237,9 +238,9 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
           : in_capture
               ? " is in a pocket: inside its capture circle (it would start pocketed)"
               : " is in a pocket: past both its facings' deep ends, where nothing holds it";
-      throw std::invalid_argument(where + why + (off_table ? ": " : "; ") + "|x| <= " +
-                                  physics::valueText(x_limit) + " and |y| <= " +
-                                  physics::valueText(y_limit) +
+      throw std::invalid_argument(where + why + (off_table ? ": " : "; ") +
+                                  "|x| <= " + physics::valueText(x_limit) +
+                                  " and |y| <= " + physics::valueText(y_limit) +
                                   " m are allowed, or a place in a pocket's opening short of its "
                                   "capture circle and of the facings' deep ends");
     }

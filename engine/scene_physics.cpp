@@ -141,12 +141,12 @@ void setIf(const std::optional<Value>& value, Value* target) {
 // Runs `check` (a physics validator); a refusal gets the file and the group's key path in front
 // and where the values came from behind.
 template <class Check>
-void validateGroup(const std::string& source, const std::string& origin, const char* group,
-                   const Check& check) {
+void validateGroup(const std::string& source, const std::function<std::string()>& origin,
+                   const char* group, const Check& check) {
   try {
     check();
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(source + ": physics." + group + ": " + e.what() + " (" + origin +
+    throw std::invalid_argument(source + ": physics." + group + ": " + e.what() + " (" + origin() +
                                 ")");
   }
 }
@@ -200,7 +200,7 @@ void applyPhysicsOverrides(const PhysicsOverrides& o, physics::CueStrikeParams* 
 }
 
 void validateScenePhysics(const SimulationParams& p, const physics::CueStrikeParams& cue,
-                          const std::string& source, const std::string& origin) {
+                          const std::string& source, const std::function<std::string()>& origin) {
   validateGroup(source, origin, "cloth", [&] { physics::validateClothParams(p.cloth); });
   validateGroup(source, origin, "cushion", [&] {
     physics::validateCushionParams(p.cushion);
@@ -208,8 +208,7 @@ void validateScenePhysics(const SimulationParams& p, const physics::CueStrikePar
     if (p.cushion_model == CushionModelChoice::SeedExact)
       physics::validateExactSolverOptions(p.cushion_solver);
   });
-  validateGroup(source, origin, "ball_ball",
-                [&] { physics::validateBallBallParams(p.ball_ball); });
+  validateGroup(source, origin, "ball_ball", [&] { physics::validateBallBallParams(p.ball_ball); });
   validateGroup(source, origin, "cue", [&] { physics::validateCueStrikeParams(cue); });
 }
 

@@ -4,6 +4,7 @@
 // path in front of their messages.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -58,10 +59,11 @@ void applyPhysicsOverrides(const PhysicsOverrides& overrides, physics::CueStrike
 
 // Validates the parameters a scene runs with, group by group (cloth, cushion, ball_ball, cue); a
 // refusal is rethrown as "<source>: physics.<group>: <the validator's message> (<origin>)", where
-// `origin` says where the values came from (the table and ball set files as well as the scene:
-// a table's contact height or a ball set's mass may be the value refused).
+// `origin()` says where the values came from (the table and ball set files as well as the scene:
+// a table's contact height or a ball set's mass may be the value refused); it is called only on
+// a refusal.
 void validateScenePhysics(const SimulationParams& params, const physics::CueStrikeParams& cue,
-                          const std::string& source, const std::string& origin);
+                          const std::string& source, const std::function<std::string()>& origin);
 
 // The parameters in the scene format's keys and units (the "physics" object a scene could give to
 // get them), for reports: `baize simulate --json` echoes it.

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <filesystem>
+#include <iterator>
 #include <stdexcept>
 
 #include "engine/json_reader.h"
@@ -15,23 +15,18 @@ namespace {
 // (on a cushion's nose, in a pocket's mouth or capture circle), m; farther is not a result of it.
 constexpr double kBeyondBed_m = 0.5;
 // The keys a result of `baize simulate --json` has.
-const char* const kResultKeys[] = {"scene",   "scene_path", "table",  "end_time_s", "first_ball_hit",
-                                   "pocketed", "foul",       "predictions", "samples", "physics",
-                                   "events",  "final",      "trajectories"};
+const char* const kResultKeys[] = {
+    "scene",       "scene_path", "table",   "end_time_s", "first_ball_hit", "pocketed",    "foul",
+    "predictions", "samples",    "physics", "events",     "final",          "trajectories"};
 
 [[noreturn]] void reject(const std::string& source, const std::string& key,
                          const std::string& what) {
   throw std::invalid_argument(source + ": " + key + ": " + what);
 }
 
-// A value as a message quotes it: JSON text, bytes that are not UTF-8 replaced, cut after 200
-// characters (a huge value would drown the message).
-std::string quoted(const nlohmann::json& value) {
-  constexpr std::size_t kMaxQuotedChars = 200;
-  const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  if (text.size() <= kMaxQuotedChars) return text;
-  return text.substr(0, kMaxQuotedChars) + "... (" + std::to_string(text.size()) + " characters)";
-}
+// A value as a message quotes it (engine::JsonReader::quoted: cut, bytes that are not UTF-8
+// replaced).
+std::string quoted(const nlohmann::json& value) { return engine::JsonReader::quoted(value); }
 
 const nlohmann::json& member(const nlohmann::json& object, const char* key,
                              const std::string& source, const std::string& path) {
@@ -115,7 +110,8 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
   for (const auto& item : result.items()) {
     if (std::find(std::begin(kResultKeys), std::end(kResultKeys), item.key()) ==
         std::end(kResultKeys)) {
-      reject(source, item.key(), "an unknown key is not allowed in a result of 'baize simulate --json'");
+      reject(source, item.key(),
+             "an unknown key is not allowed in a result of 'baize simulate --json'");
     }
   }
   const engine::Scene scene = [&] {
@@ -143,7 +139,8 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
     engine::applyPhysicsOverrides(ran, &params);
     physics::CueStrikeParams cue = engine::cueStrikeParamsFor(scene);
     engine::applyPhysicsOverrides(ran, &cue);
-    engine::validateScenePhysics(params, cue, source, "the physics the result was run with");
+    engine::validateScenePhysics(params, cue, source,
+                                 [] { return std::string("the physics the result was run with"); });
   }
   record.cloth = params.cloth;
   record.end_time_s = number(result, "end_time_s", source, "");

@@ -114,18 +114,18 @@ exec(sys.argv[3])
 json.dump(r, open(sys.argv[2], "w"))
 PY
 }
-edit_result far 'r["trajectories"]["cue"][0]["position_m"] = [1e6, 1e6]'
-expect_refused "trajectories.cue\[0\].position_m" "$work/x.png" render "$work/far.json" --png "$work/x.png"
-edit_result unknown 'r["zzz"] = 1'
-expect_refused "zzz: an unknown key" "$work/x.png" render "$work/unknown.json" --png "$work/x.png"
-edit_result table 'r["table"] = "snooker-12ft"'
-expect_refused "table: value \"snooker-12ft\"" "$work/x.png" render "$work/table.json" --png "$work/x.png"
-edit_result extra 'r["trajectories"]["ghost"] = r["trajectories"]["cue"]'
-expect_refused "trajectories: it must hold exactly" "$work/x.png" render "$work/extra.json" --png "$work/x.png"
-edit_result physics 'r["physics"]["max_events"] = -1'
-expect_refused "physics.max_events = -1 is not allowed" "$work/x.png" render "$work/physics.json" --png "$work/x.png"
-edit_result late 'r["end_time_s"] = -1'
-expect_refused "end_time_s: it must be >= 0" "$work/x.png" render "$work/late.json" --png "$work/x.png"
+# Each row: a name, the edit, and what the refusal must say.
+while IFS='|' read -r name change needle; do
+  edit_result "$name" "$change"
+  expect_refused "$needle" "$work/x.png" render "$work/$name.json" --png "$work/x.png"
+done <<'ROWS'
+far|r["trajectories"]["cue"][0]["position_m"] = [1e6, 1e6]|trajectories.cue\[0\].position_m
+unknown|r["zzz"] = 1|zzz: an unknown key
+table|r["table"] = "snooker-12ft"|table: value "snooker-12ft"
+extra|r["trajectories"]["ghost"] = r["trajectories"]["cue"]|trajectories: it must hold exactly
+physics|r["physics"]["max_events"] = -1|physics.max_events = -1 is not allowed
+late|r["end_time_s"] = -1|end_time_s: it must be >= 0
+ROWS
 
 # bench render, smoke size: one line with the median.
 out=$("$baize" bench render --width 64 --height 32 --repeat 2) || fail "bench render exited $?"

@@ -11,16 +11,19 @@
 
 namespace baize::tools {
 
+render::WholeFileTarget outputTarget(const std::string& flag, const std::string& path) {
+  try {
+    return render::wholeFileTarget(path);
+  } catch (const std::invalid_argument& refused) {
+    throw UsageError(flag + " = " + path + " is not allowed: " + refused.what());
+  }
+}
+
 void checkOutputPath(const std::string& flag, const std::string& path) {
   const std::filesystem::path file(path);
   std::error_code error;
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), error);
-  render::WholeFileTarget target;
-  try {
-    target = render::wholeFileTarget(path);
-  } catch (const std::invalid_argument& refused) {
-    throw UsageError(flag + " = " + path + " is not allowed: " + refused.what());
-  }
+  const render::WholeFileTarget target = outputTarget(flag, path);
   if (target.stream) return;  // written straight: nothing to create beside it
   const std::string probe = render::temporaryFor(target);
   std::FILE* out = std::fopen(probe.c_str(), "wb");
@@ -34,12 +37,7 @@ void checkOutputPath(const std::string& flag, const std::string& path) {
 }
 
 AtomicFile::AtomicFile(std::string path, std::string origin)
-    : path_(std::move(path)), origin_(std::move(origin)) {
-  try {
-    target_ = render::wholeFileTarget(path_);
-  } catch (const std::invalid_argument& refused) {
-    throw UsageError(origin_ + " = " + path_ + " is not allowed: " + refused.what());
-  }
+    : path_(std::move(path)), origin_(std::move(origin)), target_(outputTarget(origin_, path_)) {
   temporary_path_ = target_.stream ? target_.path : render::temporaryFor(target_);
   errno = 0;
   out_.open(temporary_path_, std::ios::out | (target_.stream ? std::ios::app : std::ios::trunc));

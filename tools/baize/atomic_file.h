@@ -12,6 +12,11 @@
 
 namespace baize::tools {
 
+// Where the output `flag` names at `path` goes (render::wholeFileTarget); a path no output can be
+// written to (a directory, a loop of links, a named pipe no program reads) is refused with a
+// UsageError naming the flag.
+render::WholeFileTarget outputTarget(const std::string& flag, const std::string& path);
+
 // Checks before any work that an output the writers of render/ will write whole can be written at
 // `path`: makes its parent folders, refuses a directory, and creates (and removes) the temporary
 // of a file. Throws UsageError naming `flag` and the path.
@@ -34,10 +39,10 @@ class AtomicFile {
  private:
   [[noreturn]] void fail(const std::string& what) const;
 
-  std::string path_;            // as given, for messages
+  std::string path_;    // as given, for messages
+  std::string origin_;  // the flag that named it (initialised before target_, which names it)
   render::WholeFileTarget target_;
   std::string temporary_path_;  // the file written: the temporary, or the stream itself
-  std::string origin_;
   std::ofstream out_;
   bool committed_ = false;
 };

@@ -29,7 +29,6 @@ struct BenchShotsFlags {
   // Given: every shot's exact cushion solver at this tolerance instead of its scene's (run time
   // against the accuracy of each impact; `baize bench accuracy` gives the error it makes).
   std::optional<double> cushion_tolerance;
-  CLI::Option* cushion_tolerance_flag = nullptr;
 };
 
 // Random shots run untimed before the timed pass (as each scene runs once untimed first).
@@ -114,10 +113,6 @@ void runBenchShots(const BenchShotsFlags& flags) {
   }
   if (flags.random_shots < 1 || flags.random_shots > kMaxBenchCount) {
     rejectFlag("--random-shots", flags.random_shots, kBenchCountAllowed);
-  }
-  if (flags.cushion_tolerance_flag->count() > 0 && !flags.cushion_tolerance) {
-    throw UsageError(
-        "--cushion-tolerance = \"\" is not allowed: it must be a number in [1e-14, 1e-6]");
   }
   if (flags.cushion_tolerance) {
     physics::ExactSolverOptions options;
@@ -211,10 +206,11 @@ void addBenchShotsCommand(CLI::App& parent) {
       ->capture_default_str();
   command->add_option("--random-shots", flags->random_shots, "random single shots")
       ->capture_default_str();
-  flags->cushion_tolerance_flag =
-      command->add_option("--cushion-tolerance", flags->cushion_tolerance,
-                          "solve every cushion impact with the exact solver at this tolerance, in "
-                          "[1e-14, 1e-6] (default: each scene's own)");
+  command
+      ->add_option("--cushion-tolerance", flags->cushion_tolerance,
+                   "solve every cushion impact with the exact solver at this tolerance, in "
+                   "[1e-14, 1e-6] (default: each scene's own)")
+      ->check(notEmpty());
   command->callback([flags] {
     if (const int status = runReportingErrors("bench shots", [&] { runBenchShots(*flags); })) {
       throw CLI::RuntimeError(status);

@@ -11,7 +11,7 @@
 
 #include "render/line_chart.h"
 #include "tools/baize/accuracy_chart.h"
-#include "render/whole_file.h"
+#include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_charts.h"
 
@@ -55,16 +55,6 @@ void withContext(const std::string& context, const std::function<void()>& body) 
     // the axis, not the file the data came from.
     if (message.rfind(context, 0) == 0) throw;
     throw UsageError(context + ": " + message);
-  }
-}
-
-// An output the PNG cannot be written to (a directory, a pipe no program reads, a loop of links) is
-// refused before any work, naming --png (a missing folder is left to the writer: exit 1).
-void checkPngKind(const std::string& png_path) {
-  try {
-    render::wholeFileTarget(png_path);
-  } catch (const std::invalid_argument& refused) {
-    throw UsageError("--png = " + png_path + " is not allowed: " + refused.what());
   }
 }
 
@@ -113,7 +103,7 @@ void addChartCommand(CLI::App& parent) {
   bench->callback([bench_flags] {
     const ChartFlags& flags = *bench_flags;
     const int status = runReportingErrors("chart bench-cushion", [&] {
-      checkPngKind(flags.png_path);
+      outputTarget("--png", flags.png_path);  // a path no PNG can go to: refused before work
       withContext(flags.input, [&] {
         const std::filesystem::path png(flags.png_path);
         writeCharts({{png.filename().string(), cushionBenchChart(flags.input)}},
@@ -136,7 +126,7 @@ void addChartCommand(CLI::App& parent) {
   accuracy->callback([accuracy_flags] {
     const ChartFlags& flags = *accuracy_flags;
     const int status = runReportingErrors("chart bench-accuracy", [&] {
-      checkPngKind(flags.png_path);
+      outputTarget("--png", flags.png_path);  // a path no PNG can go to: refused before work
       withContext(flags.input, [&] {
         const std::filesystem::path png(flags.png_path);
         writeCharts({{png.filename().string(), benchAccuracyChart(flags.input)}},
