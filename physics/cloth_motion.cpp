@@ -142,21 +142,22 @@ void validateClothParams(const ClothParams& p) {
   if (!(p.radius_m > 0)) rejectValue("ball radius R (m)", p.radius_m, "it must be > 0");
   if (!(p.gravity_mps2 > 0)) rejectValue("gravity g (m/s^2)", p.gravity_mps2, "it must be > 0");
   // Zero friction would make a state last forever (and one near zero longer than event times can
-  // be solved for); 1 and above is not cloth.
-  const std::string low = valueText(kMinClothFriction);
+  // be solved for); 1 and above is not cloth. The text is built only on a refusal: this check runs
+  // on every call of the motion functions.
+  const auto low = [] { return valueText(kMinClothFriction); };
   if (!(p.sliding_friction >= kMinClothFriction && p.sliding_friction < 1)) {
     rejectValue("cloth sliding friction mu_s", p.sliding_friction,
-                "it must lie in [" + low + ", 1)");
+                "it must lie in [" + low() + ", 1)");
   }
   if (!(p.rolling_friction >= kMinClothFriction && p.rolling_friction < p.sliding_friction)) {
     rejectValue("cloth rolling friction mu_r", p.rolling_friction,
-                "it must lie in [" + low + ", mu_s) = [" + low + ", " +
+                "it must lie in [" + low() + ", mu_s) = [" + low() + ", " +
                     valueText(p.sliding_friction) +
                     "): rolling resistance is far below sliding friction");
   }
   if (!(p.spinning_friction >= kMinClothFriction && p.spinning_friction < 1)) {
     rejectValue("cloth spinning friction mu_sp", p.spinning_friction,
-                "it must lie in [" + low + ", 1)");
+                "it must lie in [" + low() + ", 1)");
   }
 }
 
