@@ -245,6 +245,20 @@ BallState advance(const ClothParams& params, const BallState& ball, double dt_s)
   return current;  // unreachable: a stationary state lasts forever
 }
 
+double timeToRest(const ClothParams& params, const BallState& ball) {
+  validateInputs(params, ball);
+  BallState current = ball;
+  double elapsed = 0;
+  for (int change = 0; change <= kMaxStateChanges; ++change) {
+    const MotionState state = classify(params, current);
+    if (state == MotionState::Stationary) return elapsed;
+    const double duration = durationOf(params, current, state);
+    current = withinState(params, current, state, duration, duration);
+    elapsed += duration;
+  }
+  return elapsed;  // unreachable: every state but rest ends within kMaxStateChanges
+}
+
 double specificKineticEnergy(const ClothParams& params, const BallState& ball) {
   const double r = params.radius_m;
   return 0.5 * ball.velocity.squaredNorm() + 0.2 * r * r * ball.angular_velocity.squaredNorm();

@@ -120,6 +120,10 @@ BallState advanceWithinState(const ClothParams& params, const BallState& ball, d
 // Throws std::invalid_argument for a negative or non-finite dt_s.
 BallState advance(const ClothParams& params, const BallState& ball, double dt_s);
 
+// Time until a lone ball comes to rest, s, through its remaining state changes (0 for a ball at
+// rest): the sum of their durations.
+double timeToRest(const ClothParams& params, const BallState& ball);
+
 // Kinetic energy per unit mass, J/kg: v^2 / 2 + (1/5) R^2 |w|^2 (a solid ball, I = (2/5) m R^2).
 double specificKineticEnergy(const ClothParams& params, const BallState& ball);
 

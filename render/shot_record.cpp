@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "engine/json_reader.h"
+#include "physics/cloth_motion.h"
+#include "physics/value_text.h"
 
 namespace baize::render {
 namespace {
@@ -14,6 +16,11 @@ namespace {
 // A ball's recorded position may lie this far beyond the table's bed and still be on the table
 // (on a cushion's nose, in a pocket's mouth or capture circle), m; farther is not a result of it.
 constexpr double kBeyondBed_m = 0.5;
+// A result's end_time_s and the instant its pieces say the last ball stops or falls may differ by
+// this much, s: the event loop adds the state changes' durations to the clock one by one and the
+// check here sums them first, which rounds differently by ulps; a microsecond is far above that
+// and far below a frame.
+constexpr double kEndTimeSlack_s = 1e-6;
 // The keys a result of `baize simulate --json` has.
 const char* const kResultKeys[] = {
     "scene",       "scene_path", "table",   "end_time_s", "first_ball_hit", "pocketed",    "foul",
@@ -201,6 +208,21 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
   if (!trajectories.is_object() || trajectories.size() != record.ball_ids.size()) {
     reject(source, "trajectories",
            "it must hold exactly the balls listed in \"final\" (a trajectory each)");
+  }
+  // The shot ends when its last ball stops or falls, which the last piece of each path fixes: an
+  // end_time_s beyond it would have pictures and frames drawn long after everything stood still.
+  double last_stop_s = 0;
+  for (const engine::Trajectory& trajectory : record.trajectories) {
+    const engine::TrajectoryPiece& last = trajectory.back();
+    const double moving_s = last.pocketed ? 0 : physics::timeToRest(record.cloth, last.state);
+    last_stop_s = std::max(last_stop_s, last.start_time_s + moving_s);
+  }
+  if (!(std::abs(record.end_time_s - last_stop_s) <= kEndTimeSlack_s)) {
+    reject(source, "end_time_s",
+           "value " + quoted(result["end_time_s"]) +
+               " is not allowed: it must be when the last ball stops or falls, " +
+               physics::valueText(last_stop_s) +
+               " s after the strike by the last piece of each trajectory");
   }
 
   const auto index_of = [&](const nlohmann::json& id, const std::string& path) {

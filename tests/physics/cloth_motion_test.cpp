@@ -142,6 +142,38 @@ TEST(ClothMotionTest, RollingBallStopsAfterVSquaredOverTwoMuRG) {
   }
 }
 
+TEST(ClothMotionTest, TimeToRestSumsTheStatesAndEndsWhereAdvanceFindsTheBallAtRest) {
+  for (const ClothParams& params : bothCloths()) {
+    const double g = params.gravity_mps2;
+    // A stun shot without spin: sliding 2 v / (7 mu_s g), then rolling at 5/7 v until it stops.
+    for (double speed : {0.05, 1.0, 4.0}) {
+      const BallState stun = makeBall({0.1, 0.2}, {0, speed, 0}, Vector3d::Zero());
+      const double expected = 2 * speed / (7 * params.sliding_friction * g) +
+                              5.0 / 7.0 * speed / (params.rolling_friction * g);
+      EXPECT_NEAR(timeToRest(params, stun), expected, kRoundingRelative * expected);
+    }
+    // Any motion (sidespin outlasting the roll included): at that time advance() has the ball at
+    // rest, and a little before it not yet (a millionth of it before, the speed or spin left is
+    // far above the thresholds that count as rest).
+    std::mt19937_64 rng(44);
+    std::uniform_real_distribution<double> speed(-3, 3);
+    std::uniform_real_distribution<double> spin(-150, 150);
+    for (int trial = 0; trial < 200; ++trial) {
+      const BallState ball =
+          makeBall({0, 0}, {speed(rng), speed(rng), 0}, {spin(rng), spin(rng), spin(rng)});
+      const double rest = timeToRest(params, ball);
+      ASSERT_GT(rest, 0);
+      EXPECT_EQ(motionState(params, advance(params, ball, rest)), MotionState::Stationary);
+      EXPECT_NE(motionState(params, advance(params, ball, rest * (1 - 1e-6))),
+                MotionState::Stationary);
+    }
+    EXPECT_EQ(timeToRest(params, makeBall({0.3, 0}, Vector3d::Zero(), Vector3d::Zero())), 0);
+  }
+  BallState bad = makeBall({0, 0}, {1, 0, 0}, Vector3d::Zero());
+  bad.velocity.z() = 0.5;
+  EXPECT_THROW(timeToRest(poolCloth(), bad), std::invalid_argument);
+}
+
 TEST(ClothMotionTest, DrawShotSlowsReversesOrStopsAsTheFormulasSay) {
   const ClothParams params = snookerCloth();
   const double speed = 1.5;

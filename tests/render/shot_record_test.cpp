@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace baize::render {
@@ -102,6 +103,27 @@ TEST(ShotRecord, MalformedResultsAreRefusedNamingTheKey) {
   EXPECT_NE(messageOf(unknown_ball).find("events[0].ball"), std::string::npos);
 
   EXPECT_THROW(loadShotRecord("/no/such/result.json"), std::invalid_argument);
+}
+
+// end_time_s is when the last ball stops or falls, which the last pieces of the paths fix: every
+// shipped scene's result passes, and an end moved away from that instant beyond the slack does not.
+TEST(ShotRecord, EndTimeMustBeWhenTheLastBallStopsOrFalls) {
+  for (const auto& file : std::filesystem::directory_iterator(engine::assetsDirectory() + "/scenes")) {
+    const nlohmann::json result = resultOf(file.path().stem().string());
+    EXPECT_EQ(messageOf(result), "") << file.path();
+  }
+  const nlohmann::json result = resultOf("one-cushion-bank");  // its object ball is pocketed
+  const double end_s = result["end_time_s"].get<double>();
+  for (double edited : {1e300, 2 * end_s, end_s + 2e-6, end_s - 2e-6, 0.5 * end_s}) {
+    nlohmann::json changed = result;
+    changed["end_time_s"] = edited;
+    const std::string message = messageOf(changed);
+    EXPECT_NE(message.find("end_time_s: value"), std::string::npos) << edited << ": " << message;
+    EXPECT_NE(message.find("when the last ball stops or falls"), std::string::npos) << message;
+  }
+  nlohmann::json within = result;
+  within["end_time_s"] = end_s + 0.5e-6;  // within the slack of rounding
+  EXPECT_EQ(messageOf(within), "");
 }
 
 }  // namespace
