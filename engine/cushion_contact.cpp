@@ -68,8 +68,8 @@ physics::BallVelocity resolveCushionContact(const SimulationParams& params,
             "physics.cushion.paper_steps = " + std::to_string(params.cushion_paper_steps) +
             ": the paper scheme made a cushion impact gain energy (" +
             physics::valueText(before_J) + " J in, " + physics::valueText(after_J) +
-            " J out), its first-order error: more increments make it smaller, and the exact model "
-            "has none");
+            " J out): the scheme's first-order error, which more increments usually shrink; the "
+            "exact model (physics.cushion.model \"exact\") does not have it");
       }
       return after;
     }
