@@ -16,9 +16,10 @@ namespace baize::physics {
 struct ExactSolverOptions {
   // Error allowed, relative to the velocity scale |v| + R |w| (and the matching impulse and work
   // scales), per share of the impact's impulse (error per unit step). Accepted: [1e-14, 1e-6]. The
-  // default keeps output velocities within 1e-9 V0 of the converged solution: over 16000 seeded
-  // impacts (wide and rolling sets, snooker and pool cushions) the largest error was 8.0e-10 V0
-  // (tests and `baize bench cushion` check it).
+  // default keeps output velocities within 1e-9 V0 of the converged solution: over the 12000
+  // seeded impacts of `baize bench cushion --impacts 8000` (wide and rolling sets) the largest error
+  // is 5.4e-10 V0 on the paper's snooker cushion and 9.0e-10 V0 on the 9 ft pool table's (tests
+  // and the bench check it).
   double tolerance = 3e-11;
   // > 0: record result.trace with samples at least this dense in P (N s), plus every step and
   // event.

@@ -159,6 +159,9 @@ expect_error 2 "--impacts = 2e+09 is not allowed: it must lie in [1, 1000000]" \
   bench cushion --impacts 2000000000
 expect_error 2 "--steps = 2e+09 is not allowed: it must lie in [1, 10000000]" \
   cushion --solver paper --steps 2000000000
+expect_error 2 "ball mass (kg) = -1 is not allowed: it must lie in [0.001, 1000] (set by --mass)" \
+  bench cushion --impacts 1 --repeat 1 --mass -1
+expect_error 2 "--mu-s = nan is not allowed" bench cushion --impacts 1 --repeat 1 --mu-s nan
 expect_error 1 "--csv = $work/missing/bench.csv: cannot create" \
   bench cushion --impacts 1 --repeat 1 --csv "$work/missing/bench.csv"
 [[ ! -e "$work/never" && ! -e "$work/missing" ]] || fail "a refused command left files behind"
@@ -261,5 +264,22 @@ with open(sys.argv[2]) as f:
 for line in lines:
     assert line in printed, line
 ' "$work/bench.csv" "$work/bench.out"
+
+# The bench on another cushion (the 9 ft pool table's ball and cloth): the header names the values
+# in use (h = 7R/5 of the radius given), they reach every solver (the table differs from the
+# snooker one above), and the exact solver keeps its accuracy there too.
+"$baize" bench cushion --impacts 20 --repeat 1 --mass 0.17 --radius 0.028575 --mu-s 0.2 \
+  --csv "$work/bench_pool.csv" >"$work/bench_pool.out" || fail "bench on the pool cushion exited $?"
+grep -qF "cushion: M 0.17 kg, R 0.028575 m, h 0.040005 m, e_e 0.98, mu_w 0.14, mu_s 0.2" \
+  "$work/bench_pool.out" || fail "the pool bench does not name its cushion: $(head -3 "$work/bench_pool.out")"
+grep -qF "cushion: M 0.1406 kg, R 0.02625 m, h 0.03675 m" "$work/bench.out" ||
+  fail "the default bench does not name the paper's snooker cushion"
+check_python '
+snooker = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[1])}
+pool = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[2])}
+assert snooker.keys() == pool.keys()
+assert all(snooker[k] != pool[k] for k in pool), (snooker, pool)
+assert pool["defaultexact"] <= 1e-9, pool
+' "$work/bench.csv" "$work/bench_pool.csv"
 
 echo "cushion CLI: all checks passed"

@@ -12,6 +12,7 @@
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_bench.h"
+#include "tools/baize/cushion_param_flags.h"
 
 namespace baize::tools {
 namespace {
@@ -24,6 +25,7 @@ struct BenchFlags {
   std::string csv_path;
   int impacts = kDefaultBenchImpacts;
   int passes = kDefaultPasses;
+  CushionParamFlags cushion;  // default: the paper's snooker values
 };
 
 std::string csvRow(const BenchRow& row) {
@@ -52,15 +54,21 @@ void runBench(const BenchFlags& flags) {
   if (flags.passes < 1 || flags.passes > kMaxBenchCount) {
     rejectFlag("--repeat", flags.passes, kBenchCountAllowed);
   }
+  const physics::CushionParams params = cushionParamsOf(flags.cushion);
   // Opened first, so that an unwritable path fails before the measurement.
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
 
-  const physics::CushionParams params;  // the paper's snooker values
   std::cout << "baize bench cushion: " << flags.impacts << " impacts (seed " << kBenchSeed
             << "; V0 in [0.1, 2.5] m/s, alpha in [1, 179] deg, topspin in [-2, 3] V0/R, "
             << "sidespin in [-3, 3] V0/R), best time of " << flags.passes
-            << " timed passes per impact\n";
+            << " timed passes per impact\n"
+            << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
+            << physics::valueText(params.radius_m) << " m, h "
+            << physics::valueText(params.contact_height_m) << " m, e_e "
+            << physics::valueText(params.restitution) << ", mu_w "
+            << physics::valueText(params.cushion_friction) << ", mu_s "
+            << physics::valueText(params.cloth_friction) << '\n';
   const std::string header = "solver,setting,median_ns,max_error";
   bool header_printed = false;
   const BenchReport report =
@@ -105,6 +113,7 @@ void addBenchCushionCommand(CLI::App& bench) {
       ->capture_default_str();
   command->add_option("--repeat", flags->passes, "timed passes; each impact keeps its best time")
       ->capture_default_str();
+  addCushionParamFlags(command, &flags->cushion);
   command->callback([flags] {
     if (const int status = runReportingErrors("bench cushion", [&] { runBench(*flags); })) {
       throw CLI::RuntimeError(status);

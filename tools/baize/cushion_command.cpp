@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/cushion_param_flags.h"
 #include "tools/baize/cushion_run.h"
 #include "tools/baize/cushion_sweep.h"
 
@@ -21,8 +22,8 @@ struct CushionFlags {
   CushionShot shot;
   std::string solver = "exact";
   SolverSetting setting;
-  physics::CushionParams params;
-  CLI::Option* contact_height_flag = nullptr;  // unset: h = 7R/5 of the radius in use
+  CushionParamFlags cushion;
+  physics::CushionParams params;  // from `cushion`, checked
   bool json = false;
   std::string sweep_directory;
   CLI::Option* sweep_flag = nullptr;
@@ -30,8 +31,7 @@ struct CushionFlags {
   CLI::Option* tolerance_flag = nullptr;  // the exact solver's only
 };
 
-// The checks that belong to the flags themselves. The parameters' ranges are the physics' to
-// check (validateCushionParams); namingTheFlag adds the flag to its messages.
+// The checks that belong to the flags themselves (the cushion parameters are cushionParamsOf's).
 void validateFlags(const CushionFlags& flags) {
   const CushionShot& shot = flags.shot;
   requireFiniteFlag("--speed", shot.speed_mps);
@@ -60,13 +60,6 @@ void validateFlags(const CushionFlags& flags) {
   if (!(flags.setting.exact_tolerance > 0)) {
     rejectFlag("--tolerance", flags.setting.exact_tolerance, "it must be > 0");
   }
-  const physics::CushionParams& p = flags.params;
-  requireFiniteFlag("--mass", p.mass_kg);
-  requireFiniteFlag("--radius", p.radius_m);
-  requireFiniteFlag("--h", p.contact_height_m);
-  requireFiniteFlag("--e", p.restitution);
-  requireFiniteFlag("--mu-w", p.cushion_friction);
-  requireFiniteFlag("--mu-s", p.cloth_friction);
 }
 
 std::string vectorText(const Eigen::Vector3d& x) {
@@ -162,32 +155,10 @@ void printJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
   std::cout << out.dump(2) << '\n';
 }
 
-// The physics names a rejected value by its quantity ("ball mass (kg) = -1 is not allowed: ...");
-// say which flag set it.
-std::string namingTheFlag(const std::string& physics_message) {
-  static const std::pair<const char*, const char*> flag_of_quantity[] = {
-      {"ball mass (kg)", "--mass"},
-      {"ball radius (m)", "--radius"},
-      {"cushion contact height h (m)", "--h"},
-      {"cushion restitution e_e", "--e"},
-      {"cushion friction mu_w", "--mu-w"},
-      {"cloth friction mu_s", "--mu-s"},
-      {"exact solver tolerance", "--tolerance"},
-      {"paper solver steps", "--steps"},
-  };
-  for (const auto& [quantity, flag] : flag_of_quantity) {
-    if (physics_message.rfind(quantity, 0) == 0) return physics_message + " (set by " + flag + ")";
-  }
-  return physics_message;
-}
-
 void solveAndPrint(CushionFlags& flags) {
   flags.setting.kind = flags.solver == "paper" ? SolverKind::Paper : SolverKind::Exact;
-  if (flags.contact_height_flag->count() == 0) {
-    flags.params.contact_height_m = flags.params.radius_m * 7.0 / 5.0;  // the paper's h = 7R/5
-  }
   validateFlags(flags);
-  physics::validateCushionParams(flags.params);
+  flags.params = cushionParamsOf(flags.cushion);
   if (flags.sweep_flag->count() > 0) {
     for (const std::string& path :
          writeCushionSweep(flags.sweep_directory, flags.params, flags.setting)) {
@@ -251,17 +222,7 @@ void addCushionCommand(CLI::App& parent) {
                                            "exact solver: local error per step relative to V0")
                               ->capture_default_str();
 
-  command->add_option("--mass", flags->params.mass_kg, "ball mass (kg)")->capture_default_str();
-  command->add_option("--radius", flags->params.radius_m, "ball radius (m)")->capture_default_str();
-  flags->contact_height_flag = command->add_option(
-      "--h", flags->params.contact_height_m,
-      "cushion contact height h above the slate (m); default 7R/5 of the radius in use");
-  command->add_option("--e", flags->params.restitution, "cushion restitution e_e (energetic)")
-      ->capture_default_str();
-  command->add_option("--mu-w", flags->params.cushion_friction, "cushion friction mu_w")
-      ->capture_default_str();
-  command->add_option("--mu-s", flags->params.cloth_friction, "cloth friction mu_s")
-      ->capture_default_str();
+  addCushionParamFlags(command, &flags->cushion);
 
   CLI::Option* json = command->add_flag("--json", flags->json, "print one JSON object");
   flags->sweep_flag =
