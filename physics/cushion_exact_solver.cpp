@@ -153,8 +153,9 @@ constexpr double kErrorOrder = 8;
 // First step as a fraction of M v_y0, the scale of the whole normal impulse.
 constexpr double kFirstStepFraction = 0.2;
 // The slip rate counts as affine in the friction direction when r(-x) misses r0 - W x by at most
-// this fraction of the rates' size (rounding); and a closed-form root of phi*'s equation is kept
-// when its residual is within this fraction (rounding of the quartic's roots).
+// this fraction of the rates' size (rounding), and vanishes along a direction (the cone's edge)
+// when it is that small there; a closed-form root of phi*'s equation is kept when its residual is
+// within the second fraction (rounding of the quartic's roots).
 constexpr double kAffineCheckRelative = 1e-12;
 constexpr double kAffineRootRelative = 1e-9;
 // Samples on the circle when searching for the direction a contact slips off in from rest.
@@ -524,7 +525,8 @@ class ExactImpact {
   // the angle, cross(d', r(d)) + cross(d, W d') with d' = d turned a right angle, are exact from r0
   // and W, so an iteration costs no rate evaluation and no sine or cosine (d is turned by
   // normalizing d + dphi d'). NotAffine when r is not affine here (affineSlipRate); NotFound when
-  // Newton does not reach a direction along which the slip grows.
+  // Newton does not reach a direction along which the slip grows, or, on the cone's edge, along
+  // which its rate vanishes.
   enum class AffineNewton { Found, NotFound, NotAffine };
   AffineNewton creepDirectionAffineNewton(int k, Laws laws, const Eigen::Vector2d& guess,
                                           Eigen::Vector2d* result) const {
@@ -541,12 +543,15 @@ class ExactImpact {
       d = (d + change * across).normalized();
       if (std::abs(change) <= kCreepAngleTolerance) {
         // On the cone's edge the slip rate vanishes along phi* (the friction there is what
-        // sticking needs): its growth is zero up to rounding, either sign, and the root is the
-        // answer. Refused, it sent the call on to a search of the whole circle, dozens of times the
-        // cost (a third of the time of an impact that grazes the edge for long).
-        const Eigen::Vector2d r = r0 + W * d;
-        const bool on_edge = r.norm() <= kAffineRootRelative * (r0.norm() + W.norm());
-        if (!(r.dot(d) > 0) && !on_edge) break;
+        // sticking needs): its growth is zero up to rounding, of either sign, and the root is the
+        // answer (lawsAt slides the held contact along it; slidesSteadily takes a slip lying along
+        // it as sliding steadily on the edge). Refused, it sent lawsAt on to a search of the whole
+        // circle, dozens of times the cost (a third of the time of an impact that grazes the edge
+        // for long).
+        const Eigen::Vector2d rate = r0 + W * d;
+        const double scale = r0.norm() + W.col(0).norm() + W.col(1).norm();
+        const bool on_edge = rate.norm() <= kAffineCheckRelative * scale;
+        if (!(rate.dot(d) > 0) && !on_edge) break;
         *result = d;
         return AffineNewton::Found;
       }

@@ -210,7 +210,8 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
            "it must hold exactly the balls listed in \"final\" (a trajectory each)");
   }
   // The shot ends when its last ball stops or falls, which the last piece of each path fixes: an
-  // end_time_s beyond it would have pictures and frames drawn long after everything stood still.
+  // end_time_s beyond it would have pictures and frames drawn long after everything stood still,
+  // one before it would cut the shot short.
   double last_stop_s = 0;
   for (const engine::Trajectory& trajectory : record.trajectories) {
     const engine::TrajectoryPiece& last = trajectory.back();

@@ -308,6 +308,31 @@ TEST(CushionExactSolver, ClothHeldWithTheNoseHeldKeepsItsLimits) {
   }
 }
 
+// The one-cushion bank's object ball (assets/scenes/one-cushion-bank.json: nearly stunned, 80
+// degrees, a little spin about its line of travel) holds its nose contact on the edge of its cone
+// for much of the impact, where phi* is the direction along which the slip rate vanishes (growth
+// zero up to rounding, of either sign) and is taken as found. Against the converged solution and
+// energy, at the default tolerance and at tighter ones.
+TEST(CushionExactSolver, NoseHeldOnTheEdgeOfItsConeMatchesTheConvergedSolution) {
+  CushionParams p;  // the 9 ft pool table's ball and cushion
+  p.mass_kg = 0.17;
+  p.radius_m = 0.028575;
+  p.contact_height_m = 0.03629;
+  p.cloth_friction = 0.2;
+  BallVelocity in;
+  in.v = {0.48727834067160958, 2.7537629198501103, 0};
+  in.w = {-6.8958193208755212, 1.1571339236764118, -1.311652708280405};
+  const double V = in.v.norm();
+  const BallVelocity converged = solveExact(p, in, kConvergedTolerance).after;
+  for (double tolerance : {3e-11, 1e-12}) {
+    SCOPED_TRACE("tolerance " + std::to_string(tolerance));
+    const CushionImpactResult r = solveExact(p, in, tolerance);
+    EXPECT_LE(velocityDifference(r.after, converged, p.radius_m) / V, kSolverAccuracy);
+    EXPECT_LE(kineticEnergy(p, r.after), kineticEnergy(p, in));
+    EXPECT_LT(r.after.v.y(), 0);  // it leaves the cushion
+  }
+}
+
 // Regression (found by fuzzing, corpus regression_held_law_chatter.bin): a nose contact sliding
 // along phi* on the edge of its cone, at the smallest tolerances, was released from its held law,
 // taken as sliding steadily at once, and held again, a thousand times over a few per cent of the

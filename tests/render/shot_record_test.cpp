@@ -108,7 +108,8 @@ TEST(ShotRecord, MalformedResultsAreRefusedNamingTheKey) {
 // end_time_s is when the last ball stops or falls, which the last pieces of the paths fix: every
 // shipped scene's result passes, and an end moved away from that instant beyond the slack does not.
 TEST(ShotRecord, EndTimeMustBeWhenTheLastBallStopsOrFalls) {
-  for (const auto& file : std::filesystem::directory_iterator(engine::assetsDirectory() + "/scenes")) {
+  const std::string scenes = engine::assetsDirectory() + "/scenes";
+  for (const auto& file : std::filesystem::directory_iterator(scenes)) {
     const nlohmann::json result = resultOf(file.path().stem().string());
     EXPECT_EQ(messageOf(result), "") << file.path();
   }

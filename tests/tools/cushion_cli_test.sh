@@ -274,6 +274,10 @@ grep -qF "cushion: M 0.17 kg, R 0.028575 m, h 0.040005 m, e_e 0.98, mu_w 0.14, m
   "$work/bench_pool.out" || fail "the pool bench does not name its cushion: $(head -3 "$work/bench_pool.out")"
 grep -qF "cushion: M 0.1406 kg, R 0.02625 m, h 0.03675 m" "$work/bench.out" ||
   fail "the default bench does not name the paper's snooker cushion"
+"$baize" bench cushion --impacts 1 --repeat 1 --radius 0.028575 --h 0.03629 >"$work/bench_h.out" ||
+  fail "bench with --h exited $?"
+grep -qF "R 0.028575 m, h 0.03629 m," "$work/bench_h.out" ||
+  fail "an explicit --h does not win over 7R/5: $(head -2 "$work/bench_h.out")"
 check_python '
 snooker = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[1])}
 pool = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[2])}

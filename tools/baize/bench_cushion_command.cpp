@@ -25,7 +25,7 @@ struct BenchFlags {
   std::string csv_path;
   int impacts = kDefaultBenchImpacts;
   int passes = kDefaultPasses;
-  CushionParamFlags cushion;  // default: the paper's snooker values
+  CushionParamFlags cushion_flags;  // default: the paper's snooker values
 };
 
 std::string csvRow(const BenchRow& row) {
@@ -54,7 +54,7 @@ void runBench(const BenchFlags& flags) {
   if (flags.passes < 1 || flags.passes > kMaxBenchCount) {
     rejectFlag("--repeat", flags.passes, kBenchCountAllowed);
   }
-  const physics::CushionParams params = cushionParamsOf(flags.cushion);
+  const physics::CushionParams params = cushionParamsOf(flags.cushion_flags);
   // Opened first, so that an unwritable path fails before the measurement.
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
@@ -113,7 +113,7 @@ void addBenchCushionCommand(CLI::App& bench) {
       ->capture_default_str();
   command->add_option("--repeat", flags->passes, "timed passes; each impact keeps its best time")
       ->capture_default_str();
-  addCushionParamFlags(command, &flags->cushion);
+  addCushionParamFlags(command, &flags->cushion_flags);
   command->callback([flags] {
     if (const int status = runReportingErrors("bench cushion", [&] { runBench(*flags); })) {
       throw CLI::RuntimeError(status);

@@ -22,8 +22,8 @@ struct CushionFlags {
   CushionShot shot;
   std::string solver = "exact";
   SolverSetting setting;
-  CushionParamFlags cushion;
-  physics::CushionParams params;  // from `cushion`, checked
+  CushionParamFlags cushion_flags;  // as given
+  physics::CushionParams params;    // from cushion_flags, checked
   bool json = false;
   std::string sweep_directory;
   CLI::Option* sweep_flag = nullptr;
@@ -155,10 +155,22 @@ void printJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
   std::cout << out.dump(2) << '\n';
 }
 
+// A physics refusal with the flag that set the value named ("... (set by --tolerance)").
+std::string namingTheFlag(const std::string& physics_message) {
+  static const std::pair<const char*, const char*> flag_of_quantity[] = {
+      {"exact solver tolerance", "--tolerance"},
+      {"paper solver steps", "--steps"},
+  };
+  for (const auto& [quantity, flag] : flag_of_quantity) {
+    if (physics_message.rfind(quantity, 0) == 0) return physics_message + " (set by " + flag + ")";
+  }
+  return namingTheCushionFlag(physics_message);
+}
+
 void solveAndPrint(CushionFlags& flags) {
   flags.setting.kind = flags.solver == "paper" ? SolverKind::Paper : SolverKind::Exact;
   validateFlags(flags);
-  flags.params = cushionParamsOf(flags.cushion);
+  flags.params = cushionParamsOf(flags.cushion_flags);
   if (flags.sweep_flag->count() > 0) {
     for (const std::string& path :
          writeCushionSweep(flags.sweep_directory, flags.params, flags.setting)) {
@@ -222,7 +234,7 @@ void addCushionCommand(CLI::App& parent) {
                                            "exact solver: local error per step relative to V0")
                               ->capture_default_str();
 
-  addCushionParamFlags(command, &flags->cushion);
+  addCushionParamFlags(command, &flags->cushion_flags);
 
   CLI::Option* json = command->add_flag("--json", flags->json, "print one JSON object");
   flags->sweep_flag =

@@ -16,14 +16,13 @@ void addCushionParamFlags(CLI::App* command, CushionParamFlags* flags) {
       "cushion contact height h above the slate (m); default 7R/5 of the radius in use");
   command->add_option("--e", p.restitution, "cushion restitution e_e (energetic)")
       ->capture_default_str();
-  command->add_option("--mu-w", p.cushion_friction, "cushion friction mu_w")
-      ->capture_default_str();
+  command->add_option("--mu-w", p.cushion_friction, "cushion friction mu_w")->capture_default_str();
   command->add_option("--mu-s", p.cloth_friction, "cloth friction mu_s")->capture_default_str();
 }
 
 physics::CushionParams cushionParamsOf(const CushionParamFlags& flags) {
   physics::CushionParams p = flags.params;
-  if (flags.contact_height_flag->count() == 0) {
+  if (flags.contact_height_flag == nullptr || flags.contact_height_flag->count() == 0) {
     p.contact_height_m = p.radius_m * 7.0 / 5.0;  // the paper's h = 7R/5
   }
   requireFiniteFlag("--mass", p.mass_kg);
@@ -35,12 +34,12 @@ physics::CushionParams cushionParamsOf(const CushionParamFlags& flags) {
   try {
     physics::validateCushionParams(p);
   } catch (const std::invalid_argument& rejected) {
-    throw UsageError(namingTheFlag(rejected.what()));
+    throw UsageError(namingTheCushionFlag(rejected.what()));
   }
   return p;
 }
 
-std::string namingTheFlag(const std::string& physics_message) {
+std::string namingTheCushionFlag(const std::string& physics_message) {
   static const std::pair<const char*, const char*> flag_of_quantity[] = {
       {"ball mass (kg)", "--mass"},
       {"ball radius (m)", "--radius"},
@@ -48,8 +47,6 @@ std::string namingTheFlag(const std::string& physics_message) {
       {"cushion restitution e_e", "--e"},
       {"cushion friction mu_w", "--mu-w"},
       {"cloth friction mu_s", "--mu-s"},
-      {"exact solver tolerance", "--tolerance"},
-      {"paper solver steps", "--steps"},
   };
   for (const auto& [quantity, flag] : flag_of_quantity) {
     if (physics_message.rfind(quantity, 0) == 0) return physics_message + " (set by " + flag + ")";

@@ -18,13 +18,13 @@ struct CushionParamFlags {
 // Adds the six flags to `command`, writing into `flags`.
 void addCushionParamFlags(CLI::App* command, CushionParamFlags* flags);
 
-// The parameters the flags give (h = 7R/5 unless --h was given), checked: a value that is not
-// finite or out of its range is refused with a UsageError naming its flag.
+// The parameters the flags give (h = 7R/5 unless --h was given; flags never added count as not
+// given), checked: a value that is not finite or out of its range is refused with a UsageError
+// naming its flag.
 physics::CushionParams cushionParamsOf(const CushionParamFlags& flags);
 
-// A physics refusal ("ball mass (kg) = -1 is not allowed: ...") with the flag that set the value
-// named ("... (set by --mass)"); other messages unchanged. Also knows the solvers' --tolerance
-// and --steps.
-std::string namingTheFlag(const std::string& physics_message);
+// A physics refusal of a cushion parameter ("ball mass (kg) = -1 is not allowed: ...") with the
+// flag that set it named ("... (set by --mass)"); other messages unchanged.
+std::string namingTheCushionFlag(const std::string& physics_message);
 
 }  // namespace baize::tools
