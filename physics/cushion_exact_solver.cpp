@@ -144,8 +144,8 @@ constexpr double kEventBracketUlps = 8;
 // (Larger floors, 0.3 to 1, cost 3 to 10 % fewer evaluations but let rare impacts of the rolling
 // bench set exceed 1e-9 V0 at the default tolerance.)
 constexpr double kMinErrorShare = 0.2;
-// A slip below the regularizing slip that grows may at most grow by this multiple of itself in one
-// step. Near a slip that small (a nose slip growing again after passing close by zero) a longer
+// A slipping slip below the regularizing slip that grows may change by at most this multiple of its
+// own size in one step (so at most double, and turn by at most 60 degrees). Near a slip that small (a nose slip growing again after passing close by zero) a longer
 // step comes near the branch point of |u| for complex impulses, where the embedded error estimate
 // fails: measured 5 to 30 times below the step's true error. Such steps made the largest errors of
 // the bench's impacts on the pool cushion (at tolerance 3e-11: 9.0e-10 V0, 5.4e-10 with this).
@@ -948,9 +948,9 @@ class ExactImpact {
     return step;
   }
 
-  // The step's growth of a small slipping slip against kSmallSlipGrowthPerStep, as an error of the
-  // step's order (so that the step factor shortens the next try to the allowed growth); 0 when no
-  // such slip grows beyond it.
+  // The step's change of a small growing slip against kSmallSlipGrowthPerStep, as an error of the
+  // step's order (so that the step factor shortens the next try toward the allowed change, by at
+  // most its clamp per try); 0 when no such slip changes beyond it.
   double smallSlipGrowthError(const State& from, const State& to) const {
     const std::array<Eigen::Vector2d, 2> before = slips(from), after = slips(to);
     double error = 0;

@@ -311,8 +311,9 @@ TEST(CushionExactSolver, ClothHeldWithTheNoseHeldKeepsItsLimits) {
 // Regression (found measuring the bench on the pool cushion): a rolling ball with heavy sidespin
 // whose nose slip passes close by zero and grows again. While that slip was below the regularizing
 // slip the embedded error estimate of a long step missed its true error by 5 to 30 times, and this
-// impact ended 9.0e-10 V0 off at the default tolerance (2.8e-10 at 1e-9, 1.7e-11 at 1e-10). With
-// the growth of such a slip bounded per step it is 5e-11 V0 off.
+// impact ended 9.0e-10 V0 off at the default tolerance (before the bound: 2.8e-10 at 1e-9 and
+// 1.7e-11 at 1e-10, only the default's steps fell foul of it). With the change of such a slip
+// bounded per step it is 5e-11 V0 off.
 constexpr double kRegrowthImpactError = 2e-10;  // four times that, well below the 9e-10 it was
 TEST(CushionExactSolver, ASmallSlipGrowingAgainIsResolvedAtTheDefaultTolerance) {
   CushionParams p;  // the 9 ft pool table's ball and cushion
