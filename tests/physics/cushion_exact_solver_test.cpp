@@ -308,6 +308,17 @@ TEST(CushionExactSolver, ClothHeldWithTheNoseHeldKeepsItsLimits) {
   }
 }
 
+// The 9 ft pool table's ball and cushion: the pool ball set, the table's contact height, the pool
+// cloth's mu_s and the default restitution and nose friction.
+CushionParams poolTableCushion() {
+  CushionParams p;
+  p.mass_kg = 0.17;
+  p.radius_m = 0.028575;
+  p.contact_height_m = 0.03629;
+  p.cloth_friction = 0.2;
+  return p;
+}
+
 // Regression (found measuring the bench on the pool cushion): a rolling ball with heavy sidespin
 // whose nose slip passes close by zero and grows again. While that slip was below the regularizing
 // slip the embedded error estimate of a long step missed its true error by 5 to 30 times, and this
@@ -316,11 +327,7 @@ TEST(CushionExactSolver, ClothHeldWithTheNoseHeldKeepsItsLimits) {
 // bounded per step it is 5e-11 V0 off.
 constexpr double kRegrowthImpactError = 2e-10;  // four times that, well below the 9e-10 it was
 TEST(CushionExactSolver, ASmallSlipGrowingAgainIsResolvedAtTheDefaultTolerance) {
-  CushionParams p;  // the 9 ft pool table's ball and cushion
-  p.mass_kg = 0.17;
-  p.radius_m = 0.028575;
-  p.contact_height_m = 0.03629;
-  p.cloth_friction = 0.2;
+  const CushionParams p = poolTableCushion();
   BallVelocity in;
   in.v = {-1.9657515611691627, 1.1229208185905326, 0};
   in.w = {-40.751292721229923, -71.337992813213532, -97.68104595167128};
@@ -337,11 +344,7 @@ TEST(CushionExactSolver, ASmallSlipGrowingAgainIsResolvedAtTheDefaultTolerance) 
 // zero up to rounding, of either sign) and is taken as found. Against the converged solution and
 // energy, at the default tolerance and at tighter ones.
 TEST(CushionExactSolver, NoseHeldOnTheEdgeOfItsConeMatchesTheConvergedSolution) {
-  CushionParams p;  // the 9 ft pool table's ball and cushion
-  p.mass_kg = 0.17;
-  p.radius_m = 0.028575;
-  p.contact_height_m = 0.03629;
-  p.cloth_friction = 0.2;
+  const CushionParams p = poolTableCushion();
   BallVelocity in;
   in.v = {0.48727834067160958, 2.7537629198501103, 0};
   in.w = {-6.8958193208755212, 1.1571339236764118, -1.311652708280405};
