@@ -104,8 +104,17 @@ void readCueShot(const JsonReader& shot, physics::CueShot* cue) {
 }  // namespace
 
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
+  return sceneFromJson(document, source, nullptr);
+}
+
+Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
+                    const JsonReader* own_shot) {
   const JsonReader scene(document, source);
-  scene.requireKeys({"table", "ball_set", "shot"}, {"rack", "balls", "physics"});
+  if (own_shot) {
+    scene.requireKeys({"table", "ball_set"}, {"rack", "balls", "physics", "shot"});
+  } else {
+    scene.requireKeys({"table", "ball_set", "shot"}, {"rack", "balls", "physics"});
+  }
   Scene result;
   result.source = source;
   const std::string table = scene.text("table");
@@ -168,7 +177,7 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
                                 ": the scene places no balls: give a rack, balls by id, or both");
   }
 
-  const JsonReader shot = scene.object("shot");
+  const JsonReader shot = own_shot ? *own_shot : scene.object("shot");
   shot.requireKeys({"speed_mps"},
                    {"cue_ball", "aim_at", "heading_deg", "elevation_deg", "side", "height"});
   result.cue_ball = shot.has("cue_ball") ? shot.text("cue_ball") : "cue";

@@ -30,6 +30,10 @@ struct Scene {
 // ball off the table, an impossible shot or a physics override out of its range.
 Scene loadScene(const std::string& path);
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source);
+// The same with the shot given apart (a suite case's own "shot", which replaces the scene's whole):
+// read from `own_shot`, so that a refusal about it names where it stands.
+Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
+                    const JsonReader* own_shot);
 
 // The physics of the scene's table and balls: pool or snooker cloth, the table's cushion height,
 // the ball set's radius and mass, then the scene's overrides.

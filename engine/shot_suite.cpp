@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -222,20 +223,18 @@ SuiteCase readCase(const nlohmann::json& raw, const std::string& source, int ind
   } else {
     reader.reject("scene", "a scene object or the path of a scene file relative to the suite");
   }
-  if (reader.has("shot")) {
-    reader.object("shot");  // an object, checked by the scene reader
-    scene_document["shot"] = raw.at("shot");
-  }
   SuiteCase result;
   result.name = name;
+  // The case's own shot, when it gives one, replaces the scene's whole and is read where it stands,
+  // so that a refusal names it.
+  std::optional<JsonReader> own_shot;
+  if (reader.has("shot")) own_shot.emplace(reader.object("shot"));
   try {
-    result.scene = sceneFromJson(scene_document, scene_source);
+    result.scene = sceneFromJson(scene_document, scene_source, own_shot ? &*own_shot : nullptr);
   } catch (const std::invalid_argument& e) {
-    // A refused shot key is the case's own when the case gives the shot.
-    const std::string message = e.what(), shot_prefix = scene_source + ": shot";
-    if (reader.has("shot") && message.rfind(shot_prefix, 0) == 0) {
-      throw std::invalid_argument(reader.where("shot") + message.substr(shot_prefix.size()) +
-                                  " (the case's shot replaces the scene's whole)");
+    const std::string message = e.what();
+    if (own_shot && message.rfind(reader.where("shot"), 0) == 0) {
+      throw std::invalid_argument(message + " (the case's shot replaces the scene's whole)");
     }
     throw std::invalid_argument(reader.where("scene") + ": " + message);
   }

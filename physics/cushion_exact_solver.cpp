@@ -145,10 +145,11 @@ constexpr double kEventBracketUlps = 8;
 // bench set exceed 1e-9 V0 at the default tolerance.)
 constexpr double kMinErrorShare = 0.2;
 // A slipping slip below the regularizing slip that grows may change by at most this multiple of its
-// own size in one step (so at most double, and turn by at most 60 degrees). Near a slip that small (a nose slip growing again after passing close by zero) a longer
-// step comes near the branch point of |u| for complex impulses, where the embedded error estimate
-// fails: measured 5 to 30 times below the step's true error. Such steps made the largest errors of
-// the bench's impacts on the pool cushion (at tolerance 3e-11: 9.0e-10 V0, 5.4e-10 with this).
+// own size in one step (so at most double, and turn by at most 60 degrees). Near a slip that small
+// (a nose slip growing again after passing close by zero) a longer step comes near the branch point
+// of |u| for complex impulses, where the embedded error estimate fails: measured 5 to 30 times
+// below the step's true error. Such steps made the largest errors of the bench's impacts on the
+// pool cushion (at tolerance 3e-11: 9.0e-10 V0, 5.4e-10 with this).
 constexpr double kSmallSlipGrowthPerStep = 1;
 // Step-size control of the embedded pair: safety factor and bounds on the change per step.
 constexpr double kStepSafety = 0.9;
@@ -838,9 +839,10 @@ class ExactImpact {
     return r;
   }
 
-  // Whether a slipping contact's slip turned by more than a right angle from `from` to `to`.
-  bool slipReversed(const State& from, const State& to) const {
-    const std::array<Eigen::Vector2d, 2> before = slips(from), after = slips(to);
+  // Whether a slipping contact's slip turned by more than a right angle from `before` to `after`
+  // (the slips at a step's start and end).
+  bool slipReversed(const std::array<Eigen::Vector2d, 2>& before,
+                    const std::array<Eigen::Vector2d, 2>& after) const {
     for (int k = 0; k < 2; ++k) {
       if (slipping(k) && !(before[k].dot(after[k]) > 0)) return true;
     }
@@ -928,7 +930,8 @@ class ExactImpact {
     State third = slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12;
     State fifth =
         er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 + er11 * k11 + er12 * k12;
-    if (!slipReversed(z, step.z) && step.rate_at_end[kP] > 0) {
+    const std::array<Eigen::Vector2d, 2> slips_before = slips(z), slips_after = slips(step.z);
+    if (!slipReversed(slips_before, slips_after) && step.rate_at_end[kP] > 0) {
       const State tangent = step.rate_at_end / step.rate_at_end[kP];
       third -= third[kP] * tangent;
       fifth -= fifth[kP] * tangent;
@@ -944,15 +947,16 @@ class ExactImpact {
     // it covers, so the errors of many steps add up to about the tolerance, not to their number
     // times it.
     const double share = std::max(std::abs(step.z[kP] - z[kP]) / impulse_scale_, kMinErrorShare);
-    step.error = std::max(error / share, smallSlipGrowthError(z, step.z));
+    step.error = std::max(error / share, smallSlipGrowthError(slips_before, slips_after));
     return step;
   }
 
   // The step's change of a small growing slip against kSmallSlipGrowthPerStep, as an error of the
   // step's order (so that the step factor shortens the next try toward the allowed change, by at
-  // most its clamp per try); 0 when no such slip changes beyond it.
-  double smallSlipGrowthError(const State& from, const State& to) const {
-    const std::array<Eigen::Vector2d, 2> before = slips(from), after = slips(to);
+  // most its clamp per try), from the slips at the step's start and end; 0 when no such slip
+  // changes beyond it.
+  double smallSlipGrowthError(const std::array<Eigen::Vector2d, 2>& before,
+                              const std::array<Eigen::Vector2d, 2>& after) const {
     double error = 0;
     for (int k = 0; k < 2; ++k) {
       if (!slipping(k) || contacts_[k].approaching) continue;

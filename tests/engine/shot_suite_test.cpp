@@ -96,6 +96,14 @@ TEST(SuiteParsing, CaseLevelErrorsNameTheCase) {
   EXPECT_MENTIONS(message, "drills.json: case \"straight\".shot.");
   EXPECT_MENTIONS(message, "(the case's shot replaces the scene's whole)");
 
+  // A bad key of the scene's own stays the scene's, even one whose name starts like "shot".
+  document = oneCase(R"({"no_foul": true})");
+  document["cases"][0]["shot"] = {{"aim_at", "1"}, {"speed_mps", 1}};
+  document["cases"][0]["scene"]["shotgun"] = 1;
+  message = suiteError(document);
+  EXPECT_MENTIONS(message, "case \"straight\".scene: drills.json: shotgun = 1 is not allowed");
+  EXPECT_EQ(message.find("replaces the scene's whole"), std::string::npos) << message;
+
   document = oneCase(R"({"no_foul": true})");
   document["cases"][0]["scene"] = 3;
   EXPECT_MENTIONS(suiteError(document), "case \"straight\".scene");
