@@ -338,6 +338,35 @@ TEST(CushionExactSolver, ASmallSlipGrowingAgainIsResolvedAtTheDefaultTolerance) 
   EXPECT_LE(kineticEnergy(p, r.after), kineticEnergy(p, in));
 }
 
+// Regression (a grippy rolling impact of a random-parameter set): the nose sticks while the cloth,
+// slipping a little, is caught sliding steadily on its cone's edge and held. The friction that
+// sticks both then lies outside both cones. Both used to slide along their phi* at once, so the
+// nose slipped 3e-4 V within one step without an event and again stuck later, 1.6e-7 V0 off at
+// every tolerance from 3e-13 up. The cloth's cone, exceeded more, now gives first, and the nose's
+// cone then holds it (as it does at 1e-13 and finer): the nose sticks to the end.
+TEST(CushionExactSolver, AHeldClothCaughtSlidingDoesNotReleaseAStuckNose) {
+  CushionParams p;
+  p.mass_kg = 0.1702883362974103;
+  p.radius_m = 0.026731520157980828;
+  p.contact_height_m = 0.038681352504396894;
+  p.restitution = 0.7385425480441111;
+  p.cushion_friction = 0.45643807716580664;
+  p.cloth_friction = 0.2083077317527242;
+  BallVelocity in;
+  in.v = {-0.7816855606662212, 2.012050926208071, 0};
+  in.w = {-75.26885543048188, -29.24209158501018, -15.334094881810248};  // rolling, some side
+  const double V = in.v.norm();
+  const BallVelocity converged = solveExact(p, in, kConvergedTolerance).after;
+  for (double tolerance : {3e-11, 3e-13}) {
+    SCOPED_TRACE("tolerance " + std::to_string(tolerance));
+    const CushionImpactResult r = solveExact(p, in, tolerance);
+    EXPECT_LE(velocityDifference(r.after, converged, p.radius_m) / V, kSolverAccuracy);
+    EXPECT_LE(kineticEnergy(p, r.after), kineticEnergy(p, in));
+    EXPECT_EQ(r.contact_changes.back().contact, Contact::Cushion);
+    EXPECT_EQ(r.contact_changes.back().mode, ContactMode::Stick);
+  }
+}
+
 // The one-cushion bank's object ball (assets/scenes/one-cushion-bank.json: nearly stunned, 80
 // degrees, a little spin about its line of travel) holds its nose contact on the edge of its cone
 // for much of the impact, where phi* is the direction along which the slip rate vanishes (growth
