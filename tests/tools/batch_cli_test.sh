@@ -53,17 +53,18 @@ echo "$scene" >"$work/scenes/straight.json"
   echo '[1, 2]'
   echo '{"scene": "scenes/missing.json"}'
   echo '{"scene": "scenes/straight.json", "scene": "scenes/straight.json"}'
+  echo '{"scene": "scenes/straight.json", "shot": {"aim_at": "1", "speed_mps": -2}}'
 } >"$work/mixed.jsonl"
 set +e
 "$baize" batch "$work/mixed.jsonl" --threads 2 >"$work/mixed-out.jsonl" 2>"$work/mixed-err.txt"
 status=$?
 set -e
 [[ $status == 1 ]] || fail "bad lines must give exit status 1, got $status"
-grep -q "5 of 7 lines failed" "$work/mixed-err.txt" || fail "stderr: $(cat "$work/mixed-err.txt")"
+grep -q "6 of 8 lines failed" "$work/mixed-err.txt" || fail "stderr: $(cat "$work/mixed-err.txt")"
 python3 - "$work/mixed-out.jsonl" <<'PY'
 import json, sys
 r = [json.loads(l) for l in open(sys.argv[1])]
-assert [x["line"] for x in r] == [1, 2, 4, 5, 6, 7, 8], [x["line"] for x in r]  # line 3 is blank
+assert [x["line"] for x in r] == [1, 2, 4, 5, 6, 7, 8, 9], [x["line"] for x in r]  # line 3 is blank
 ok = {x["line"]: x for x in r if "error" not in x}
 assert set(ok) == {1, 5}, r
 assert ok[1]["id"] == "first" and ok[1]["first_hit"] == "1"
@@ -75,6 +76,8 @@ assert "mixed.jsonl:4" in err[4] and "spin" in err[4], err[4]
 assert "mixed.jsonl:6" in err[6], err[6]
 assert "missing.json" in err[7], err[7]
 assert "mixed.jsonl:8: scene appears twice" in err[8], err[8]
+# A line's own shot is named where it stands, not in the scene file it replaces the shot of.
+assert "mixed.jsonl:9: shot.speed_mps" in err[9] and "straight.json" not in err[9], err[9]
 PY
 
 # A bad flag or input: exit 2.

@@ -76,11 +76,11 @@ engine::Scene lineScene(nlohmann::json document, const std::string& source,
                   "a scene object or the path of a scene file (relative to the input's "
                   "folder; standard input: the working directory)");
   }
-  if (reader.has("shot")) {
-    reader.object("shot");
-    scene["shot"] = document.at("shot");
-  }
-  return engine::sceneFromJson(scene, scene_source);
+  // The line's own shot replaces the scene's whole and is read where it stands (the line), so that
+  // a refusal about it names the line, not the scene file.
+  if (!reader.has("shot")) return engine::sceneFromJson(scene, scene_source);
+  const engine::JsonReader own_shot = reader.object("shot");
+  return engine::sceneFromJson(scene, scene_source, &own_shot);
 }
 
 // One result line; `failed` is set when the line could not be run.
