@@ -272,7 +272,8 @@ static_assert(kErrorOrder == 8, "eighthRoot stands for the power 1 / kErrorOrder
 double eighthRoot(double x) { return std::sqrt(std::sqrt(std::sqrt(x))); }
 
 double stepFactor(double error) {
-  if (!(error > 0)) return kStepMaxFactor;
+  if (error == 0) return kStepMaxFactor;
+  if (!(error > 0)) return kStepMinFactor;  // NaN: the step measured nothing; a shorter one may
   // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
   // the share leaves that order (above the floor it is one lower, which the safety factor covers).
   return std::clamp(kStepSafety / eighthRoot(error), kStepMinFactor, kStepMaxFactor);
