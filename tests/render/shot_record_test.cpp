@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "engine/scene_physics.h"
+
 namespace baize::render {
 namespace {
 
@@ -32,6 +34,8 @@ nlohmann::json resultOf(const std::string& scene_name) {
   nlohmann::json out;
   out["scene"] = scenePath(scene_name);
   out["end_time_s"] = run.result.end_time_s;
+  out["physics"] =
+      engine::physicsJson(engine::simulationParamsFor(scene), engine::cueStrikeParamsFor(scene));
   for (std::size_t i = 0; i < run.ball_ids.size(); ++i) {
     out["final"].push_back({{"id", run.ball_ids[i]}});
     for (const engine::TrajectoryPiece& q : run.result.trajectories[i]) {
