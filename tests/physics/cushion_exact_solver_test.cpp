@@ -310,6 +310,19 @@ TEST(CushionExactSolver, ClothHeldWithTheNoseHeldKeepsItsLimits) {
 
 // The 9 ft pool table's ball and cushion: the pool ball set, the table's contact height, the pool
 // cloth's mu_s and the default restitution and nose friction.
+// A cushion by all six of its parameters (a found impact's, to the last digit).
+CushionParams cushionOf(double mass_kg, double radius_m, double contact_height_m,
+                        double restitution, double cushion_friction, double cloth_friction) {
+  CushionParams p;
+  p.mass_kg = mass_kg;
+  p.radius_m = radius_m;
+  p.contact_height_m = contact_height_m;
+  p.restitution = restitution;
+  p.cushion_friction = cushion_friction;
+  p.cloth_friction = cloth_friction;
+  return p;
+}
+
 CushionParams poolTableCushion() {
   CushionParams p;
   p.mass_kg = 0.17;
@@ -345,13 +358,8 @@ TEST(CushionExactSolver, ASmallSlipGrowingAgainIsResolvedAtTheDefaultTolerance) 
 // every tolerance from 3e-13 up. The cloth's cone, exceeded more, now gives first, and the nose's
 // cone then holds it (as it does at 1e-13 and finer): the nose sticks to the end.
 TEST(CushionExactSolver, AHeldClothCaughtSlidingDoesNotReleaseAStuckNose) {
-  CushionParams p;
-  p.mass_kg = 0.1702883362974103;
-  p.radius_m = 0.026731520157980828;
-  p.contact_height_m = 0.038681352504396894;
-  p.restitution = 0.7385425480441111;
-  p.cushion_friction = 0.45643807716580664;
-  p.cloth_friction = 0.2083077317527242;
+  const CushionParams p = cushionOf(0.1702883362974103, 0.026731520157980828, 0.038681352504396894,
+                                    0.7385425480441111, 0.45643807716580664, 0.2083077317527242);
   BallVelocity in;
   in.v = {-0.7816855606662212, 2.012050926208071, 0};
   in.w = {-75.26885543048188, -29.24209158501018, -15.334094881810248};  // rolling, some side
@@ -394,13 +402,8 @@ TEST(CushionExactSolver, NoseHeldOnTheEdgeOfItsConeMatchesTheConvergedSolution) 
 // impulse, until the solver gave up. It now slides as its slip says until that slip has grown
 // tenfold, and the impact is solved like its neighbours in tolerance.
 TEST(CushionExactSolver, ReleasedHeldLawDoesNotChatter) {
-  CushionParams p;
-  p.mass_kg = 0.13984374998599378;
-  p.radius_m = 0.029999998225830493;
-  p.contact_height_m = 0.055422302782106338;
-  p.restitution = 0.99998476519249024;
-  p.cushion_friction = 0.20000457698479401;
-  p.cloth_friction = 0.13999936278909431;
+  const CushionParams p = cushionOf(0.13984374998599378, 0.029999998225830493, 0.055422302782106338,
+                                    0.99998476519249024, 0.20000457698479401, 0.13999936278909431);
   BallVelocity in;
   in.v = {-4.1998294459655483, 4.9805625399995037, 0};
   in.w = {68.627442908929865, 101.20137538788873, 0};
