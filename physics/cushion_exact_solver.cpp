@@ -171,10 +171,11 @@ constexpr double kAffineRootRelative = 1e-9;
 // Samples on the circle when searching for the direction a contact slips off in from rest.
 constexpr int kDirectionSamples = 72;
 // The tolerances accepted: below 1e-14 the slips are not resolved in double precision. Above 1e-6
-// the vanishing threshold (kVanishedSlipFraction x tolerance x velocity scale) comes within two
-// decades of the regularizing slip (kRegularizingSlipFraction), below which slips are resolved:
-// at 1e-4 the two meet, contacts are held and released on every step, and a sixth of random
-// impacts (rolling balls with sidespin) ran out of steps or contact changes.
+// the vanishing threshold (kVanishedSlipFraction x tolerance x velocity scale, 5e-6 V at 1e-6)
+// comes within about two decades of the regularizing slip (kRegularizingSlipFraction), below which
+// slips are resolved: with the threshold at 10 x tolerance x V, at 1e-4 the two met, contacts were
+// held and released on every step, and a sixth of random impacts (rolling balls with sidespin) ran
+// out of steps or contact changes.
 constexpr double kMinTolerance = 1e-14;
 constexpr double kMaxTolerance = 1e-6;
 // Logic guards, far above what the bounded equations need (an impact takes tens of steps and a few
@@ -273,7 +274,7 @@ double eighthRoot(double x) { return std::sqrt(std::sqrt(std::sqrt(x))); }
 
 double stepFactor(double error) {
   if (error == 0) return kStepMaxFactor;
-  if (!(error > 0)) return kStepMinFactor;  // NaN: the step measured nothing; a shorter one may
+  if (!(error > 0)) return kStepMinFactor;  // NaN: that step failed; try a shorter one
   // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
   // the share leaves that order (above the floor it is one lower, which the safety factor covers).
   return std::clamp(kStepSafety / eighthRoot(error), kStepMinFactor, kStepMaxFactor);
@@ -702,11 +703,11 @@ class ExactImpact {
 
   // The laws in force at slips u: slipping contacts slide along their slips; held contacts stick if
   // their cones can hold them and otherwise slide along phi* (found from their `creep` guesses).
-  // When both are held and the friction that sticks both lies outside both cones, the contact whose
-  // cone it exceeds more slides first, and the other's cone is judged again against that: it may
-  // hold it then (a rolling ball's cloth caught sliding steadily on its cone's edge while the nose
-  // sticks). Letting both slide at once there let a stuck nose slip, its slip grown from zero to
-  // 3e-4 V in one step without an event, 1.6e-7 V0 off the converged solution (a grippy impact).
+  // When both are held and the friction that sticks both lies outside both cones, one slides first
+  // (slidesFirst) and the other's cone is judged again against that: it may hold it then (a rolling
+  // ball's cloth caught sliding steadily on its cone's edge while the nose sticks). Letting both
+  // slide at once there let a stuck nose slip, its slip grown from zero to 3e-4 V in one step
+  // without an event, 1.6e-7 V0 off the converged solution (a grippy impact).
   Laws lawsAt(const std::array<Eigen::Vector2d, 2>& u, std::array<double, 2>* speed) const {
     Laws laws;
     for (int k = 0; k < 2; ++k) {
@@ -720,22 +721,31 @@ class ExactImpact {
     if (!held(0) && !held(1)) return laws;
     if (held(1) && !held(0) && clothHeldLaws(&laws)) return laws;
     for (int round = 0; round < 2; ++round) {
-      const Friction f = frictionFor(laws);
-      int worst = -1;
-      double worst_margin = 0;
-      for (int k = 0; k < 2; ++k) {
-        if (!laws.stick[k] || !held(k)) continue;
-        const double margin = coneMargin(k, f);
-        if (margin >= kConeSlackRelative) continue;
-        if (worst < 0 || !(margin >= worst_margin)) {  // NaN ranks first, as outside
-          worst = k;
-          worst_margin = margin;
-        }
-      }
-      if (worst < 0) break;
-      slideAlongCreep(worst, &laws);
+      const int k = slidesFirst(laws, frictionFor(laws), u);
+      if (k < 0) break;
+      slideAlongCreep(k, &laws);
     }
     return laws;
+  }
+
+  // Of the held contacts that stick under `laws`, the one whose cone cannot hold friction f and
+  // that slides first; -1 if every such cone holds. With both outside: the one that still slips
+  // (caught sliding steadily, its slip above the vanishing threshold) while the other's slip is
+  // zero, so that a moving contact goes on moving and a stuck one stays stuck as far as the cones
+  // allow; otherwise the one whose cone is exceeded more (NaN counts as outside, ties the nose).
+  int slidesFirst(const Laws& laws, const Friction& f,
+                  const std::array<Eigen::Vector2d, 2>& u) const {
+    std::array<bool, 2> outside = {false, false};
+    std::array<double, 2> margin = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+      if (!laws.stick[k] || !held(k)) continue;
+      margin[k] = coneMargin(k, f);
+      outside[k] = !(margin[k] >= kConeSlackRelative);
+    }
+    if (!outside[0] || !outside[1]) return outside[0] ? 0 : outside[1] ? 1 : -1;
+    const bool moving_I = u[0].norm() > vanished_slip_, moving_C = u[1].norm() > vanished_slip_;
+    if (moving_I != moving_C) return moving_I ? 0 : 1;
+    return std::isnan(margin[1]) || margin[1] < margin[0] ? 1 : 0;
   }
 
   // Held contact k's law set to sliding along its phi* under the other contact's law in `laws`.
@@ -1044,8 +1054,9 @@ class ExactImpact {
     return kEventResidualFraction * options_.tolerance * scale;
   }
   // How far inside its cone held contact k's stick friction would be at z (negative: outside),
-  // the other contact following its own law given that k sticks: if it is held too, it slides
-  // along its phi* unless its cone can hold it then (as in lawsAt).
+  // the other contact following its own law given that k sticks: if it is held too, it slides along
+  // its phi* when lawsAt would let it slide first (slidesFirst), and k's margin is taken against
+  // that. So the sign says whether lawsAt holds k or lets it slide.
   double neededMargin(int k, const State& z) const {
     const std::array<Eigen::Vector2d, 2> u = slips(z);
     Laws laws;
@@ -1055,7 +1066,7 @@ class ExactImpact {
           u[j].norm() > 0 ? Eigen::Vector2d(u[j].normalized()) : contacts_[j].direction;
     }
     const int other = 1 - k;
-    if (held(other) && !(coneMargin(other, frictionFor(laws)) >= kConeSlackRelative))
+    if (held(other) && slidesFirst(laws, frictionFor(laws), u) == other)
       slideAlongCreep(other, &laws);
     return coneMargin(k, frictionFor(laws));
   }
