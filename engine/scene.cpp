@@ -103,10 +103,6 @@ void readCueShot(const JsonReader& shot, physics::CueShot* cue) {
 
 }  // namespace
 
-Scene sceneFromJson(const nlohmann::json& document, const std::string& source) {
-  return sceneFromJson(document, source, nullptr);
-}
-
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
                     const JsonReader* own_shot) {
   const JsonReader scene(document, source);

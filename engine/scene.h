@@ -29,11 +29,11 @@ struct Scene {
 // pockets would let the set's balls through (checkCapturesCoverOpenings), overlapping balls, a
 // ball off the table, an impossible shot or a physics override out of its range.
 Scene loadScene(const std::string& path);
-Scene sceneFromJson(const nlohmann::json& document, const std::string& source);
-// The same with the shot given apart (a suite case's own "shot", which replaces the scene's whole):
-// read from `own_shot`, so that a refusal about it names where it stands.
+// The same from a parsed document named `source`. Given `own_shot` (a suite case's or a batch
+// line's own "shot", which replaces the scene's whole), the shot is read from it, so that a refusal
+// about it names where it stands.
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
-                    const JsonReader* own_shot);
+                    const JsonReader* own_shot = nullptr);
 
 // The physics of the scene's table and balls: pool or snooker cloth, the table's cushion height,
 // the ball set's radius and mass, then the scene's overrides.

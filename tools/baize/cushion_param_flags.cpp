@@ -1,11 +1,28 @@
 #include "tools/baize/cushion_param_flags.h"
 
 #include <stdexcept>
-#include <utility>
 
 #include "tools/baize/cli_errors.h"
 
 namespace baize::tools {
+namespace {
+
+// Each flag with the quantity physics names in its refusals and the parameter it sets.
+struct CushionFlag {
+  const char* flag;
+  const char* quantity;
+  double physics::CushionParams::*value;
+};
+constexpr CushionFlag kCushionFlags[] = {
+    {"--mass", "ball mass (kg)", &physics::CushionParams::mass_kg},
+    {"--radius", "ball radius (m)", &physics::CushionParams::radius_m},
+    {"--h", "cushion contact height h (m)", &physics::CushionParams::contact_height_m},
+    {"--e", "cushion restitution e_e", &physics::CushionParams::restitution},
+    {"--mu-w", "cushion friction mu_w", &physics::CushionParams::cushion_friction},
+    {"--mu-s", "cloth friction mu_s", &physics::CushionParams::cloth_friction},
+};
+
+}  // namespace
 
 void addCushionParamFlags(CLI::App* command, CushionParamFlags* flags) {
   physics::CushionParams& p = flags->params;
@@ -25,12 +42,7 @@ physics::CushionParams cushionParamsOf(const CushionParamFlags& flags) {
   if (flags.contact_height_flag == nullptr || flags.contact_height_flag->count() == 0) {
     p.contact_height_m = p.radius_m * 7.0 / 5.0;  // the paper's h = 7R/5
   }
-  requireFiniteFlag("--mass", p.mass_kg);
-  requireFiniteFlag("--radius", p.radius_m);
-  requireFiniteFlag("--h", p.contact_height_m);
-  requireFiniteFlag("--e", p.restitution);
-  requireFiniteFlag("--mu-w", p.cushion_friction);
-  requireFiniteFlag("--mu-s", p.cloth_friction);
+  for (const CushionFlag& f : kCushionFlags) requireFiniteFlag(f.flag, p.*f.value);
   try {
     physics::validateCushionParams(p);
   } catch (const std::invalid_argument& rejected) {
@@ -40,16 +52,10 @@ physics::CushionParams cushionParamsOf(const CushionParamFlags& flags) {
 }
 
 std::string namingTheCushionFlag(const std::string& physics_message) {
-  static const std::pair<const char*, const char*> flag_of_quantity[] = {
-      {"ball mass (kg)", "--mass"},
-      {"ball radius (m)", "--radius"},
-      {"cushion contact height h (m)", "--h"},
-      {"cushion restitution e_e", "--e"},
-      {"cushion friction mu_w", "--mu-w"},
-      {"cloth friction mu_s", "--mu-s"},
-  };
-  for (const auto& [quantity, flag] : flag_of_quantity) {
-    if (physics_message.rfind(quantity, 0) == 0) return physics_message + " (set by " + flag + ")";
+  for (const CushionFlag& f : kCushionFlags) {
+    if (physics_message.rfind(f.quantity, 0) == 0) {
+      return physics_message + " (set by " + f.flag + ")";
+    }
   }
   return physics_message;
 }
