@@ -47,7 +47,10 @@
 // the path (an error of tau alone moves no state off it). The ends of compression (v_y = 0) and
 // restitution (W = (1 - e^2) W_c, eq. 17b), the instants a stuck contact breaks and the end of a
 // held law are events, located by Newton's method (or Illinois regula falsi) on the step length,
-// each trial a full Runge-Kutta step, and a short last correction one Heun step.
+// each trial a full Runge-Kutta step, and a short last correction one Heun step. The phase ends,
+// across which the dynamics do not change, are usually aimed at instead: a step is cut to end
+// where they are predicted (extrapolated from the last step) and short third-order steps land on
+// them from there.
 
 namespace baize::physics {
 namespace {
@@ -142,6 +145,23 @@ constexpr double kEventResidualFraction = 1e-4;
 constexpr double kPolishStepFraction = 1e-3;
 constexpr double kPolishErrorFraction = 1e-3;
 constexpr double kEventBracketUlps = 8;
+// A phase end predicted within the next step (extrapolated from the last two accepted steps) is
+// aimed at: the step is cut to end there, and from where it ends, short or past by about 1e-4 of
+// it, third-order steps land on it (Newton's method on their length). They may reach at most this
+// fraction of the step away (beyond, the step counts as an ordinary one, or the event is located
+// with trial steps), their embedded error must stay below the second fraction of the tolerance
+// (so that they add nothing measurable to the step's error), and a few of them must land.
+constexpr double kLandingShiftFraction = 1e-2;
+constexpr double kLandingErrorFraction = 1e-2;
+constexpr int kMaxLandingSteps = 3;
+// The phase-end functions are sums of terms of their scale (v_y0, the compression work), so their
+// rounding is a few units of that: at tolerances below about 1e-12 kEventResidualFraction asks for
+// less, and a landing counts as reached within this many units.
+constexpr double kEventRoundingUlps = 16;
+// An aimed step that does not land (rare: the prediction missed by more than
+// kLandingShiftFraction) is followed by at most this many more before phase ends are located with
+// trial steps again, until the next event or change (so that aiming never crawls toward the end).
+constexpr int kMaxMissedLandings = 2;
 // The smallest share of the impulse scale a step's error allowance is cut to (error per unit step):
 // steps in the change of variable near a vanishing slip advance P very little and need no less.
 // (Larger floors, 0.3 to 1, cost 3 to 10 % fewer evaluations but let rare impacts of the rolling
@@ -278,6 +298,31 @@ double stepFactor(double error) {
   // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
   // the share leaves that order (above the floor it is one lower, which the safety factor covers).
   return std::clamp(kStepSafety / eighthRoot(error), kStepMinFactor, kStepMaxFactor);
+}
+
+// The root in (0, limit] of the cubic through value g0 > 0 and slope d0 < 0 at 0 and value gp and
+// slope dp at -H < 0 (an event function extrapolated from the last step across the next): Newton
+// from the linear guess, kept where the cubic falls. Returns false when it finds none there.
+bool extrapolatedRoot(double gp, double dp, double g0, double d0, double H, double limit,
+                      double* root) {
+  if (!(g0 > 0) || !(d0 < 0) || !(H > 0) || !(limit > 0)) return false;
+  double t = -g0 / d0;
+  if (!(t <= 2 * limit)) return false;  // far beyond the step: nothing to aim at yet
+  const double b = (d0 + dp + 2 * (gp - g0) / H) / (H * H);
+  const double a = ((gp - g0) / H + d0 + b * H * H) / H;
+  for (int it = 0; it < 20; ++it) {
+    const double value = g0 + t * (d0 + t * (a + t * b));
+    const double slope = d0 + t * (2 * a + 3 * b * t);
+    if (!(slope < 0)) return false;
+    const double next = t - value / slope;
+    if (!(next > 0)) return false;
+    const bool converged = std::abs(next - t) <= 4 * kEpsilon * next;
+    t = next;
+    if (converged) break;
+  }
+  if (!(t <= limit)) return false;
+  *root = t;
+  return true;
 }
 
 // The root in (0, 1) of the cubic with values g0 > 0 and g1 <= 0 and slopes d0, d1 at 0 and 1
@@ -1047,12 +1092,12 @@ class ExactImpact {
     if (event.approach_end) return kApproachLooseness * vanished_slip_;
     if (event.approach_off) return kCreepEndLooseness * creep_error_limit_;
     if (!event.phase_end) return kEventResidualFraction * options_.tolerance;
-    // The phase ends are measured against the normal motion itself (v_y0, and the compression
-    // work), not the whole velocity scale: in a grazing impact v_y0 can lie below tolerance times
-    // |v| + R |w|, and compression would "end" at once with the ball still moving in.
-    const double scale = compressing_ ? vy0_ : result_.compression_work_J;
-    return kEventResidualFraction * options_.tolerance * scale;
+    return kEventResidualFraction * options_.tolerance * phaseEndScale();
   }
+  // The phase ends are measured against the normal motion itself (v_y0, and the compression work),
+  // not the whole velocity scale: in a grazing impact v_y0 can lie below tolerance times |v| + R
+  // |w|, and compression would "end" at once with the ball still moving in.
+  double phaseEndScale() const { return compressing_ ? vy0_ : result_.compression_work_J; }
   // How far inside its cone held contact k's stick friction would be at z (negative: outside),
   // the other contact following its own law given that k sticks: if it is held too, it slides along
   // its phi* when lawsAt would let it slide first (slidesFirst), and k's margin is taken against
@@ -1184,6 +1229,45 @@ class ExactImpact {
     polished->rate_at_end = end_rate;  // for trace sampling only: the caller recomputes the rate
     polished->error = from.error;
     return std::abs(eventValue(event, polished->z)) <= tolerance_g;
+  }
+
+  // From the end of a step aimed at the phase end (past it or short of it by a little): third-order
+  // steps (Bogacki-Shampine 3(2), the rate at the step's end reused as their first stage), each as
+  // long as Newton's correction says, until the phase-end function is within its tolerance or its
+  // rounding (kEventRoundingUlps). Returns false (with up to kMaxLandingSteps x 3 evaluations
+  // spent) when they would reach more than kLandingShiftFraction of the step away, or their error
+  // estimate exceeds kLandingErrorFraction of the tolerance: the step is then taken as it is.
+  bool landOnPhaseEnd(const Step& aimed, double h, double* shift, Step* landed) {
+    const Event phase;
+    const double reachable =
+        std::max(eventTolerance(phase), kEventRoundingUlps * kEpsilon * phaseEndScale());
+    State y = aimed.z, k = aimed.rate_at_end;
+    double moved = 0;
+    for (int it = 0;; ++it) {
+      const double g = eventValue(phase, y);
+      if (std::abs(g) <= reachable) break;
+      const double slope = eventSlope(phase, k);
+      if (it == kMaxLandingSteps || !(slope < 0)) return false;
+      const double s = -g / slope;
+      if (!(std::abs(moved + s) <= kLandingShiftFraction * h)) return false;
+      const State k2 = rate(y + (0.5 * s) * k);
+      const State k3 = rate(y + (0.75 * s) * k2);
+      const State next = y + s * ((2.0 / 9) * k + (1.0 / 3) * k2 + (4.0 / 9) * k3);
+      const State k4 = rate(next);
+      const State error =
+          s * ((2.0 / 9 - 7.0 / 24) * k + (1.0 / 3 - 0.25) * k2 + (4.0 / 9 - 1.0 / 3) * k3 -
+               0.125 * k4);
+      if (!(error.cwiseQuotient(error_scale_).cwiseAbs().maxCoeff() <= kLandingErrorFraction))
+        return false;
+      y = next;
+      k = k4;
+      moved += s;
+    }
+    *shift = moved;
+    landed->z = y;
+    landed->rate_at_end = k;
+    landed->error = aimed.error;
+    return true;
   }
 
   void setSlip(int k, const State& z, const Eigen::Vector2d& target) {
@@ -1425,6 +1509,11 @@ class ExactImpact {
   // The last accepted ordinary step (tau) and its error, for predictive step control (error 0:
   // none since the last event or change).
   double previous_step_ = 0, previous_error_ = 0;
+  // The phase-end function and its slope where the last accepted step started, and that step
+  // (tau), to extrapolate the phase end from (valid while previous_error_ > 0); and the aimed
+  // steps since the last event or change that did not land (kMaxMissedLandings).
+  double last_phase_value_ = 0, last_phase_slope_ = 0, last_step_ = 0;
+  int missed_landings_ = 0;
   std::array<double, 2> mu_;
   std::array<Eigen::Vector2d, 2> slip0_;  // slips at P = 0, shifted by setSlip
   // Entries of the contact matrix M G: [[7/2, 0, cx, 0], [0, s^2 + 5/2, 0, cy], [cx, 0, 7/2, 0],
@@ -1489,6 +1578,7 @@ CushionImpactResult ExactImpact::run() {
     }
     if (changed) {
       previous_error_ = 0;
+      missed_landings_ = 0;
       k1 = rate(z);
       continue;
     }
@@ -1524,6 +1614,15 @@ CushionImpactResult ExactImpact::run() {
       h = std::min(h, release_step_cap_ / k1[kP]);
       release_step_cap_ = std::numeric_limits<double>::infinity();
     }
+    // Aim at a phase end predicted within the step (events[0]), extrapolated from the last
+    // accepted step: landing from there costs a few cheap steps instead of trial steps.
+    const double phase_value = eventValue(events[0], z), phase_slope = eventSlope(events[0], k1);
+    const double proposed_h = h;
+    double predicted = 0;
+    const bool aimed = previous_error_ > 0 && missed_landings_ < kMaxMissedLandings &&
+                       extrapolatedRoot(last_phase_value_, last_phase_slope_, phase_value,
+                                        phase_slope, last_step_, h, &predicted);
+    if (aimed) h = predicted;
     const Step step = rungeKuttaStep(z, k1, h);
     // Events are judged before the error, which may be large only because of what lies beyond them.
     // Every event the step crossed is located, and the step lands on the earliest: estimates from
@@ -1532,8 +1631,25 @@ CushionImpactResult ExactImpact::run() {
     for (int i = 0; i < events.size(); ++i) {
       if (eventValue(events[i], step.z) <= 0) crossed.push_back(i);
     }
-    if (crossed.empty()) {
+    int first = -1;
+    Step landed;
+    double length = std::numeric_limits<double>::infinity();
+    double shift = 0;
+    const bool aim_landed =
+        aimed && step.error <= 1 &&
+        (crossed.empty() || (crossed.size() == 1 && crossed[0] == 0)) &&
+        landOnPhaseEnd(step, h, &shift, &landed);
+    if (aim_landed) {
+      first = 0;
+      length = h + shift;
+    } else if (aimed && step.error <= 1) {
+      ++missed_landings_;
+    }
+    if (!aim_landed && crossed.empty()) {
       if (step.error <= 1) {
+        last_phase_value_ = phase_value;
+        last_phase_slope_ = phase_slope;
+        last_step_ = h;
         if (tracing) sampleInside(z, k1, h, step.z, step.rate_at_end);
         z = step.z;
         k1 = step.rate_at_end;
@@ -1560,12 +1676,11 @@ CushionImpactResult ExactImpact::run() {
       continue;
     }
     previous_error_ = 0;  // an event or a change breaks the trend
-    int first = -1;
-    Step landed;
-    double length = std::numeric_limits<double>::infinity();
+    missed_landings_ = 0;
     bool retry = false;
     const double step_length = h;  // of `step`, which every event is located in
     for (int i : crossed) {
+      if (aim_landed) break;  // on the phase end it was aimed at, the only event crossed
       Step candidate;
       double candidate_length = 0;
       if (!locate(events[i], z, k1, step_length, step, &candidate_length, &candidate)) {
@@ -1580,6 +1695,9 @@ CushionImpactResult ExactImpact::run() {
       }
     }
     if (retry) continue;  // a located stretch broke the tolerance: a shorter step first
+    // The next step goes on as the controller proposed before any cut to aim (as after a located
+    // event, which keeps the step that crossed it).
+    if (aimed) h = proposed_h;
     if (tracing && length > 0) sampleInside(z, k1, length, landed.z, landed.rate_at_end);
     z = landed.z;
     updateCreepGuesses(z);
