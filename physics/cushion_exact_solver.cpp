@@ -145,7 +145,7 @@ constexpr double kEventResidualFraction = 1e-4;
 constexpr double kPolishStepFraction = 1e-3;
 constexpr double kPolishErrorFraction = 1e-3;
 constexpr double kEventBracketUlps = 8;
-// A phase end predicted within the next step (extrapolated from the last two accepted steps) is
+// A phase end predicted within the next step (extrapolated from the last accepted step) is
 // aimed at: the step is cut to end there, and from where it ends, short or past by about 1e-4 of
 // it, third-order steps land on it (Newton's method on their length). They may reach at most this
 // fraction of the step away (beyond, the step counts as an ordinary one, or the event is located
@@ -155,8 +155,9 @@ constexpr double kLandingShiftFraction = 1e-2;
 constexpr double kLandingErrorFraction = 1e-2;
 constexpr int kMaxLandingSteps = 3;
 // The phase-end functions are sums of terms of their scale (v_y0, the compression work), so their
-// rounding is a few units of that: at tolerances below about 1e-12 kEventResidualFraction asks for
-// less, and a landing counts as reached within this many units.
+// rounding is a few units of that: at tolerances below about 3.6e-11 (the default among them)
+// kEventResidualFraction asks for less than this many units, within which a landing counts as
+// reached.
 constexpr double kEventRoundingUlps = 16;
 // An aimed step that does not land (rare: the prediction missed by more than
 // kLandingShiftFraction) is followed by at most this many more before phase ends are located with
@@ -1270,6 +1271,16 @@ class ExactImpact {
     return true;
   }
 
+  // Whether an event other than the phase end (events[0]) is crossed at z: a landing that moved
+  // forward past one is not taken, since that event would not be located.
+  template <typename Events>
+  bool crossedOther(const Events& events, const State& z) const {
+    for (int i = 1; i < events.size(); ++i) {
+      if (eventValue(events[i], z) <= 0) return true;
+    }
+    return false;
+  }
+
   void setSlip(int k, const State& z, const Eigen::Vector2d& target) {
     slip0_[k] += target - slip(k, z);
   }
@@ -1510,7 +1521,8 @@ class ExactImpact {
   // none since the last event or change).
   double previous_step_ = 0, previous_error_ = 0;
   // The phase-end function and its slope where the last accepted step started, and that step
-  // (tau), to extrapolate the phase end from (valid while previous_error_ > 0); and the aimed
+  // (tau; 0: none comparable), to extrapolate the phase end from (valid while previous_error_ > 0
+  // and last_step_ > 0); and the aimed
   // steps since the last event or change that did not land (kMaxMissedLandings).
   double last_phase_value_ = 0, last_phase_slope_ = 0, last_step_ = 0;
   int missed_landings_ = 0;
@@ -1638,7 +1650,7 @@ CushionImpactResult ExactImpact::run() {
     const bool aim_landed =
         aimed && step.error <= 1 &&
         (crossed.empty() || (crossed.size() == 1 && crossed[0] == 0)) &&
-        landOnPhaseEnd(step, h, &shift, &landed);
+        landOnPhaseEnd(step, h, &shift, &landed) && !crossedOther(events, landed.z);
     if (aim_landed) {
       first = 0;
       length = h + shift;
@@ -1656,7 +1668,9 @@ CushionImpactResult ExactImpact::run() {
         updateCreepGuesses(z);
         const std::array<Eigen::Vector2d, 2> u_end = slips(z);
         countSmallSlips(u_end);
-        updateApproaches(z, u_end, &k1, &h);
+        // A slip that starts or stops approaching changes the scale of tau: the phase-end
+        // function's slope there is no longer comparable with this one's.
+        if (updateApproaches(z, u_end, &k1, &h)) last_step_ = 0;
         reportModes(z);
         if (tracing) sample(z);
         // Predictive control (Gustafsson): where the accepted steps' errors follow a trend (a slip
