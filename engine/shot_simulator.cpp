@@ -535,6 +535,12 @@ TableGeometry rectangularTable(double length_m, double width_m) {
   return table;
 }
 
+Eigen::Vector2d contactNormal(const TableGeometry& table, EventKind kind, int index,
+                              const Eigen::Vector2d& position) {
+  if (kind == EventKind::Cushion) return table.cushions[index].inward_normal;
+  return (position - table.jaws[index].centre_m).normalized();
+}
+
 physics::BallState sampleTrajectory(const physics::ClothParams& cloth, const Trajectory& trajectory,
                                     double t_s) {
   if (trajectory.empty()) throw std::invalid_argument("sampleTrajectory: the trajectory is empty");
@@ -692,12 +698,6 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     c.dt_s += now;
     return c;
   };
-  // The contact normal of a cushion or jaw contact (pointing to the ball), for a ball at `at`: a
-  // straight cushion's, or the direction from a jaw's centre to the ball.
-  auto contactNormal = [&](EventKind kind, int index, const BallState& at) -> Eigen::Vector2d {
-    if (kind == EventKind::Cushion) return table.cushions[index].inward_normal;
-    return (at.position - table.jaws[index].centre_m).normalized();
-  };
   // Impacts solved ahead (engine/cushion_solve_ahead.h): ball i's earliest event, if it is a
   // cushion or jaw contact, from the state the ball will have then, as moveTo() will find it. The
   // simple rule costs less than handing it over.
@@ -714,7 +714,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
     const double dt = std::min(c.dt_s - b.reference_time_s, b.change_dt_s);
     if (dt > 0) at = physics::advanceWithinState(p.cloth, at, dt);
     const physics::BallVelocity local =
-        ContactFrame(contactNormal(c.kind, c.index, at)).toLocal(at);
+        ContactFrame(contactNormal(table, c.kind, c.index, at.position)).toLocal(at);
     if (local.v.y() > 0)
       ahead.predict(i, c.dt_s, local);
     else
@@ -1048,7 +1048,7 @@ SimulationResult simulate(const SimulationParams& p, const TableGeometry& table,
       case EventKind::Jaw: {
         // The chosen cushion model (engine/cushion_contact.h) in the frame of the contact normal,
         // or the helper's answer from the same input.
-        const Eigen::Vector2d normal = contactNormal(best.kind, best.index, a);
+        const Eigen::Vector2d normal = contactNormal(table, best.kind, best.index, a.position);
         const ContactFrame frame(normal);
         const physics::BallVelocity local = frame.toLocal(a);
         const bool pressed = path_a.quadratic_mps2.dot(normal) < 0;

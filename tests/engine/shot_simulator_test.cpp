@@ -10,6 +10,8 @@
 #include <string>
 
 #include "engine/ball_set.h"
+#include "engine/contact_geometry.h"
+#include "engine/cushion_contact.h"
 #include "engine/rack.h"
 #include "engine/table.h"
 
@@ -362,6 +364,47 @@ TEST(ShotSimulator, NineBallBreakOnTheShippedTableKeepsItsInvariants) {
   ASSERT_EQ(again.events.size(), r.events.size());
   for (std::size_t i = 0; i < r.events.size(); ++i)
     EXPECT_EQ(again.events[i].time_s, r.events[i].time_s);
+}
+
+// contactNormal is the frame the loop resolves every cushion and jaw impact in: each impact's
+// `before` ball taken into that frame and through the cushion model gives the event's `after` ball
+// to the bit (but where the ball was also pressed into the cushion, its slide along it added), over
+// a break on the shipped table and an off-centre hit on a lone jaw.
+TEST(ShotSimulator, ContactNormalGivesTheFrameOfEveryCushionImpact) {
+  const SimulationParams p = poolSimulationParams();
+  int impacts = 0, same = 0, jaws = 0;
+  auto check = [&](const TableGeometry& geometry, const std::vector<BallState>& balls) {
+    for (const Event& e : simulate(p, geometry, balls).events) {
+      if (e.kind != EventKind::Cushion && e.kind != EventKind::Jaw) continue;
+      const BallState& before = e.before[0];
+      const Eigen::Vector2d normal = contactNormal(geometry, e.kind, e.index, before.position);
+      EXPECT_NEAR(normal.norm(), 1, 1e-15);
+      const ContactFrame frame(normal);
+      const physics::BallVelocity local = frame.toLocal(before);
+      if (!(local.v.y() > 0)) continue;
+      ++impacts;
+      jaws += e.kind == EventKind::Jaw;
+      BallState expected = before;
+      frame.toTable(resolveCushionContact(p, local), &expected);
+      same += expected.velocity == e.after[0].velocity &&
+              expected.angular_velocity == e.after[0].angular_velocity;
+    }
+  };
+  const Table table = builtinTable("pool-9ft");
+  std::vector<BallState> rack;
+  for (const PlacedBall& placed : placeRack("9-ball", table, builtinBallSet("pool")))
+    rack.push_back(ballAt(placed.position_m.x(), placed.position_m.y()));
+  const Eigen::Vector2d aim = (rack[1].position - rack[0].position).normalized();
+  rack[0].velocity = {8 * aim.x(), 8 * aim.y() + 0.05, 0};
+  check(geometryOf(table), rack);
+  TableGeometry jaw;
+  jaw.jaws.push_back({{1.0, 0.0}, 0.01, M_PI / 2, 3 * M_PI / 2});  // faces -x
+  BallState ball = ballAt(0, 0.02, 1.5, 0);
+  ball.angular_velocity = {0, 1.5 / p.cushion.radius_m, 0};  // rolling
+  check(jaw, {ball});
+  EXPECT_GE(impacts, 10) << "the break meets the cushions";
+  EXPECT_GE(jaws, 1) << "the lone jaw is met";
+  EXPECT_GE(same, impacts - 2) << same << " of " << impacts << " impacts reproduced";
 }
 
 // Regression (found by `baize stress`, seed 1, shot 7432): a ball at a few um/s that came to rest a

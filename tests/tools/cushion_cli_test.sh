@@ -286,4 +286,24 @@ assert all(snooker[k] != pool[k] for k in pool), (snooker, pool)
 assert pool["defaultexact"] <= 1e-9, pool
 ' "$work/bench.csv" "$work/bench_pool.csv"
 
+# The bench on the impacts of `baize bench shots`' random single shots: the header counts them and
+# names their table's cushion (the 9 ft pool table's), the rows are the same, and the exact solver
+# keeps its accuracy there too.
+"$baize" bench cushion --from-shots 4 --repeat 1 --csv "$work/bench_shots.csv" \
+  >"$work/bench_shots.out" || fail "bench --from-shots exited $?"
+grep -qE "^baize bench cushion: the [1-9][0-9]* cushion and jaw impacts of 4 random single shots" \
+  "$work/bench_shots.out" || fail "the shots bench does not count its impacts: $(head -1 "$work/bench_shots.out")"
+grep -qF "cushion: M 0.17 kg, R 0.028575 m, h 0.03629 m, e_e 0.98, mu_w 0.14, mu_s 0.2" \
+  "$work/bench_shots.out" || fail "the shots bench does not name its table's cushion"
+check_python '
+pool = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[1])}
+shots = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[2])}
+assert shots.keys() == pool.keys()
+assert shots["defaultexact"] <= 1e-9, shots
+assert shots["defaultexact"] < shots["N=50000paper"] < shots["N=100paper"], shots
+' "$work/bench_pool.csv" "$work/bench_shots.csv"
+expect_error 2 "--from-shots = 0 is not allowed" bench cushion --from-shots 0
+expect_error 2 "--mass excludes --from-shots" bench cushion --from-shots 1 --mass 0.2
+expect_error 2 "--impacts excludes --from-shots" bench cushion --from-shots 1 --impacts 3
+
 echo "cushion CLI: all checks passed"

@@ -21,6 +21,7 @@
 #include "tools/baize/box2d_pool.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/median.h"
+#include "tools/baize/random_shots.h"
 
 namespace baize::tools {
 namespace {
@@ -97,10 +98,7 @@ std::vector<Shot> shotSet() {
   auto uniform = [&](double lo, double hi) {
     return lo + (hi - lo) * static_cast<double>(random() >> 11) * 0x1.0p-53;
   };
-  engine::Scene base;
-  base.table = engine::builtinTable("pool-9ft");
-  base.ball_set = engine::builtinBallSet("pool");
-  base.cue_ball = "cue";
+  const engine::Scene base = nineFootPoolScene();
   const double R = base.ball_set.radius_m;
   const double x = base.table.length_m / 2 - R, y = base.table.width_m / 2 - R;
   for (int made = 0; made < kRandomShots;) {

@@ -1,6 +1,7 @@
 #include "tools/baize/bench_cushion_command.h"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_bench.h"
 #include "tools/baize/cushion_param_flags.h"
+#include "tools/baize/random_shots.h"
 
 namespace baize::tools {
 namespace {
@@ -26,6 +28,7 @@ struct BenchFlags {
   int impacts = kDefaultBenchImpacts;
   int passes = kDefaultPasses;
   CushionParamFlags cushion_flags;  // default: the paper's snooker values
+  std::optional<int> from_shots;  // given: the impacts of this many random single shots instead
 };
 
 std::string csvRow(const BenchRow& row) {
@@ -54,16 +57,33 @@ void runBench(const BenchFlags& flags) {
   if (flags.passes < 1 || flags.passes > kMaxBenchCount) {
     rejectFlag("--repeat", flags.passes, kBenchCountAllowed);
   }
-  const physics::CushionParams params = cushionParamsOf(flags.cushion_flags);
+  if (flags.from_shots && (*flags.from_shots < 1 || *flags.from_shots > kMaxBenchCount)) {
+    rejectFlag("--from-shots", *flags.from_shots, kBenchCountAllowed);
+  }
+  physics::CushionParams params = cushionParamsOf(flags.cushion_flags);
   // Opened first, so that an unwritable path fails before the measurement.
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
 
-  std::cout << "baize bench cushion: " << flags.impacts << " impacts (seed " << kBenchSeed
-            << "; V0 in [0.1, 2.5] m/s, alpha in [1, 179] deg, topspin in [-2, 3] V0/R, "
-            << "sidespin in [-3, 3] V0/R), best time of " << flags.passes
-            << " timed passes per impact\n"
-            << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
+  std::vector<BenchInput> inputs;
+  if (flags.from_shots) {
+    const std::vector<physics::BallVelocity> impacts =
+        cushionImpactsOf(randomSingleShots(*flags.from_shots), &params);
+    for (const physics::BallVelocity& incoming : impacts) {
+      inputs.push_back({incoming, std::hypot(incoming.v.x(), incoming.v.y()), true});
+    }
+    std::cout << "baize bench cushion: the " << inputs.size() << " cushion and jaw impacts of "
+              << *flags.from_shots << " random single shots (those of `baize bench shots`), "
+              << "best time of " << flags.passes << " timed passes per impact\n";
+  } else {
+    inputs = seededBenchInputs(params.radius_m, flags.impacts);
+    std::cout << "baize bench cushion: " << flags.impacts << " impacts (seed " << kBenchSeed
+              << "; V0 in [0.1, 2.5] m/s, alpha in [1, 179] deg, topspin in [-2, 3] V0/R, "
+              << "sidespin in [-3, 3] V0/R), best time of " << flags.passes
+              << " timed passes per impact\n";
+  }
+  if (inputs.empty()) throw UsageError("--from-shots: those shots hit no cushion; take more");
+  std::cout << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
             << physics::valueText(params.radius_m) << " m, h "
             << physics::valueText(params.contact_height_m) << " m, e_e "
             << physics::valueText(params.restitution) << ", mu_w "
@@ -72,7 +92,7 @@ void runBench(const BenchFlags& flags) {
   const std::string header = "solver,setting,median_ns,max_error";
   bool header_printed = false;
   const BenchReport report =
-      runCushionBench(params, flags.impacts, flags.passes, [&](const BenchRow& row) {
+      runCushionBench(params, inputs, flags.passes, [&](const BenchRow& row) {
         if (!header_printed) {
           std::cout << header << '\n';
           header_printed = true;
@@ -114,6 +134,13 @@ void addBenchCushionCommand(CLI::App& bench) {
   command->add_option("--repeat", flags->passes, "timed passes; each impact keeps its best time")
       ->capture_default_str();
   addCushionParamFlags(command, &flags->cushion_flags);
+  CLI::Option* from_shots =
+      command->add_option("--from-shots", flags->from_shots,
+                          "score the impacts of this many of `baize bench shots`' random single "
+                          "shots instead of the seeded sets (their table's cushion)");
+  for (const char* name : {"--impacts", "--mass", "--radius", "--h", "--e", "--mu-w", "--mu-s"}) {
+    from_shots->excludes(name);
+  }
   command->callback([flags] {
     if (const int status = runReportingErrors("bench cushion", [&] { runBench(*flags); })) {
       throw CLI::RuntimeError(status);

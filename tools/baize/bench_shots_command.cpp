@@ -9,7 +9,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <random>
 #include <sstream>
 
 #include "engine/cushion_solve_ahead.h"
@@ -18,6 +17,7 @@
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/median.h"
+#include "tools/baize/random_shots.h"
 
 namespace baize::tools {
 namespace {
@@ -79,34 +79,6 @@ Timing timeScene(const engine::Scene& scene, int repeat, HelperTally* tally) {
   return {median(both), median(one), events};
 }
 
-// A seeded set of single shots on the 9 ft table: the cue ball and one object ball anywhere, the
-// cue ball struck at 0.5-4 m/s in any direction with any tip offset. Each shot's own event count.
-std::vector<engine::Scene> randomShots(int count) {
-  std::mt19937_64 engine(20261121);
-  auto uniform = [&](double lo, double hi) {
-    return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53);
-  };
-  engine::Scene base;
-  base.table = engine::builtinTable("pool-9ft");
-  base.ball_set = engine::builtinBallSet("pool");
-  base.cue_ball = "cue";
-  const double R = base.ball_set.radius_m;
-  const double x = base.table.length_m / 2 - R, y = base.table.width_m / 2 - R;
-  std::vector<engine::Scene> shots;
-  while (static_cast<int>(shots.size()) < count) {
-    engine::Scene s = base;
-    s.balls = {{"cue", {uniform(-x, x), uniform(-y, y)}}, {"1", {uniform(-x, x), uniform(-y, y)}}};
-    if ((s.balls[0].position_m - s.balls[1].position_m).norm() < 2 * R) continue;
-    s.shot.speed_mps = uniform(0.5, 4);
-    s.shot.heading_rad = uniform(-M_PI, M_PI);
-    const double offset = uniform(0, 0.45), angle = uniform(-M_PI, M_PI);
-    s.shot.side_offset = offset * std::cos(angle);
-    s.shot.height_offset = offset * std::sin(angle);
-    shots.push_back(s);
-  }
-  return shots;
-}
-
 void runBenchShots(const BenchShotsFlags& flags) {
   if (flags.repeat < 1 || flags.repeat > kMaxBenchCount) {
     rejectFlag("--repeat", flags.repeat, kBenchCountAllowed);
@@ -149,7 +121,7 @@ void runBenchShots(const BenchShotsFlags& flags) {
     table << f.stem().string() << ',' << std::setprecision(4) << t.median_us << ',' << t.one_core_us
           << ',' << t.events << row_end;
   }
-  std::vector<engine::Scene> shots = randomShots(flags.random_shots);
+  std::vector<engine::Scene> shots = randomSingleShots(flags.random_shots);
   std::transform(shots.begin(), shots.end(), shots.begin(), withTolerance);
   for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i)
     engine::runScene(shots[i]);  // untimed warm-up, as for the scenes

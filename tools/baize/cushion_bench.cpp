@@ -129,7 +129,20 @@ std::vector<SolverSetting> benchSettings() {
   return settings;
 }
 
-BenchReport runCushionBench(const physics::CushionParams& params, int count, int passes,
+std::vector<BenchInput> seededBenchInputs(double radius_m, int count) {
+  std::vector<CushionShot> shots = benchShots(count);
+  const std::vector<CushionShot> rolling = rollingBenchShots(rollingBenchCount(count));
+  shots.insert(shots.end(), rolling.begin(), rolling.end());
+  std::vector<BenchInput> inputs;
+  for (std::size_t i = 0; i < shots.size(); ++i) {
+    const bool timed = i < static_cast<std::size_t>(count);
+    inputs.push_back({incomingBallOf(shots[i], radius_m), shots[i].speed_mps, timed});
+  }
+  return inputs;
+}
+
+BenchReport runCushionBench(const physics::CushionParams& params,
+                            const std::vector<BenchInput>& inputs, int passes,
                             const std::function<void(const BenchRow&)>& on_row) {
   SolverSetting reference_setting;
   reference_setting.exact_tolerance = kReferenceTolerance;
@@ -138,20 +151,14 @@ BenchReport runCushionBench(const physics::CushionParams& params, int count, int
 
   BenchReport report;
   std::vector<BenchImpact> impacts;
-  std::vector<CushionShot> shots = benchShots(count);
-  const std::vector<CushionShot> rolling = rollingBenchShots(rollingBenchCount(count));
-  shots.insert(shots.end(), rolling.begin(), rolling.end());
-  for (std::size_t i = 0; i < shots.size(); ++i) {
-    const CushionShot& shot = shots[i];
-    const bool timed = i < static_cast<std::size_t>(count);
-    const physics::BallVelocity incoming = incomingBallOf(shot, params.radius_m);
+  for (const BenchInput& input : inputs) {
     const physics::BallVelocity reference =
-        solveCushionShot(params, incoming, reference_setting).after;
-    const physics::BallVelocity check = solveCushionShot(params, incoming, check_setting).after;
+        solveCushionShot(params, input.incoming, reference_setting).after;
+    const physics::BallVelocity check = solveCushionShot(params, input.incoming, check_setting).after;
     report.reference_check_error =
         std::max(report.reference_check_error,
-                 impactError(check, reference, params.radius_m, shot.speed_mps));
-    impacts.push_back({shot.speed_mps, incoming, reference, timed});
+                 impactError(check, reference, params.radius_m, input.speed_mps));
+    impacts.push_back({input.speed_mps, input.incoming, reference, input.timed});
   }
   for (const SolverSetting& setting : benchSettings()) {
     report.rows.push_back(measure(params, impacts, setting, passes));

@@ -52,10 +52,22 @@ struct BenchReport {
   double reference_check_error = 0;
 };
 
-// Times every setting over the wide and rolling sets (benchShots(count), rollingBenchShots(
-// rollingBenchCount(count))); each impact's time is the least over `passes` timed
-// batches. Calls on_row after each setting (for progress output).
-BenchReport runCushionBench(const physics::CushionParams& params, int count, int passes,
+// An impact to score: the incoming ball (local cushion frame), its speed V0 (the scale of its
+// error) and whether its time counts in median_ns.
+struct BenchInput {
+  physics::BallVelocity incoming;
+  double speed_mps = 0;
+  bool timed = true;
+};
+
+// The seeded sets: benchShots(count), timed, then rollingBenchShots(rollingBenchCount(count)).
+std::vector<BenchInput> seededBenchInputs(double radius_m, int count);
+
+// Times every setting over the inputs (each impact's time is the least over `passes` timed
+// batches) and scores it against the reference. Calls on_row after each setting (for progress
+// output).
+BenchReport runCushionBench(const physics::CushionParams& params,
+                            const std::vector<BenchInput>& inputs, int passes,
                             const std::function<void(const BenchRow&)>& on_row = {});
 
 }  // namespace baize::tools

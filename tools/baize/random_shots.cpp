@@ -1,0 +1,72 @@
+#include "tools/baize/random_shots.h"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "engine/contact_geometry.h"
+#include "engine/shot_simulator.h"
+
+namespace baize::tools {
+
+engine::Scene nineFootPoolScene() {
+  engine::Scene scene;
+  scene.table = engine::builtinTable("pool-9ft");
+  scene.ball_set = engine::builtinBallSet("pool");
+  scene.cue_ball = "cue";
+  return scene;
+}
+
+std::vector<engine::Scene> randomSingleShots(int count) {
+  std::mt19937_64 engine(20261121);
+  auto uniform = [&](double lo, double hi) {
+    return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53);
+  };
+  const engine::Scene base = nineFootPoolScene();
+  const double R = base.ball_set.radius_m;
+  const double x = base.table.length_m / 2 - R, y = base.table.width_m / 2 - R;
+  std::vector<engine::Scene> shots;
+  while (static_cast<int>(shots.size()) < count) {
+    engine::Scene s = base;
+    s.balls = {{"cue", {uniform(-x, x), uniform(-y, y)}}, {"1", {uniform(-x, x), uniform(-y, y)}}};
+    if ((s.balls[0].position_m - s.balls[1].position_m).norm() < 2 * R) continue;
+    s.shot.speed_mps = uniform(0.5, 4);
+    s.shot.heading_rad = uniform(-M_PI, M_PI);
+    const double offset = uniform(0, 0.45), angle = uniform(-M_PI, M_PI);
+    s.shot.side_offset = offset * std::cos(angle);
+    s.shot.height_offset = offset * std::sin(angle);
+    shots.push_back(s);
+  }
+  return shots;
+}
+
+std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Scene>& shots,
+                                                    physics::CushionParams* params) {
+  std::vector<physics::BallVelocity> impacts;
+  for (std::size_t i = 0; i < shots.size(); ++i) {
+    const engine::Scene& shot = shots[i];
+    const physics::CushionParams cushion = engine::simulationParamsFor(shot).cushion;
+    if (i == 0) {
+      *params = cushion;
+    } else if (cushion.mass_kg != params->mass_kg || cushion.radius_m != params->radius_m ||
+               cushion.contact_height_m != params->contact_height_m ||
+               cushion.restitution != params->restitution ||
+               cushion.cushion_friction != params->cushion_friction ||
+               cushion.cloth_friction != params->cloth_friction) {
+      throw std::logic_error("cushionImpactsOf: the shots do not share one cushion");
+    }
+    const engine::TableGeometry table = engine::geometryOf(shot.table);
+    for (const engine::Event& event : engine::runScene(shot).result.events) {
+      if (event.kind != engine::EventKind::Cushion && event.kind != engine::EventKind::Jaw)
+        continue;
+      const physics::BallState& ball = event.before[0];
+      const engine::ContactFrame frame(
+          engine::contactNormal(table, event.kind, event.index, ball.position));
+      const physics::BallVelocity incoming = frame.toLocal(ball);
+      if (incoming.v.y() > 0) impacts.push_back(incoming);
+    }
+  }
+  return impacts;
+}
+
+}  // namespace baize::tools
