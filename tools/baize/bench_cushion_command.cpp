@@ -28,7 +28,7 @@ struct BenchFlags {
   int impacts = kDefaultBenchImpacts;
   int passes = kDefaultPasses;
   CushionParamFlags cushion_flags;  // default: the paper's snooker values
-  std::optional<int> from_shots;  // given: the impacts of this many random single shots instead
+  std::optional<int> from_shots;    // given: the impacts of this many random single shots instead
 };
 
 std::string csvRow(const BenchRow& row) {
@@ -45,9 +45,12 @@ const BenchRow& rowLabelled(const BenchReport& report, SolverKind kind, const st
   throw std::logic_error("bench cushion: no row " + solverName(kind) + " " + label);
 }
 
+// target 0: none (the ratio alone).
 void printRatio(const std::string& what, double ratio, double target) {
-  std::cout << what << ": " << std::setprecision(3) << ratio << " (target >= " << target << ", "
-            << (ratio >= target ? "met" : "NOT met") << ")\n";
+  std::cout << what << ": " << std::setprecision(3) << ratio;
+  if (target > 0)
+    std::cout << " (target >= " << target << ", " << (ratio >= target ? "met" : "NOT met") << ')';
+  std::cout << '\n';
 }
 
 void runBench(const BenchFlags& flags) {
@@ -72,8 +75,12 @@ void runBench(const BenchFlags& flags) {
     for (const physics::BallVelocity& incoming : impacts) {
       inputs.push_back({incoming, std::hypot(incoming.v.x(), incoming.v.y()), true});
     }
+    if (inputs.empty()) {
+      rejectFlag("--from-shots", *flags.from_shots, "those shots meet no cushion; take more");
+    }
     std::cout << "baize bench cushion: the " << inputs.size() << " cushion and jaw impacts of "
-              << *flags.from_shots << " random single shots (those of `baize bench shots`), "
+              << *flags.from_shots << " random single shot" << (*flags.from_shots == 1 ? "" : "s")
+              << " (those of `baize bench shots`), "
               << "best time of " << flags.passes << " timed passes per impact\n";
   } else {
     inputs = seededBenchInputs(params.radius_m, flags.impacts);
@@ -82,7 +89,6 @@ void runBench(const BenchFlags& flags) {
               << "sidespin in [-3, 3] V0/R), best time of " << flags.passes
               << " timed passes per impact\n";
   }
-  if (inputs.empty()) throw UsageError("--from-shots: those shots hit no cushion; take more");
   std::cout << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
             << physics::valueText(params.radius_m) << " m, h "
             << physics::valueText(params.contact_height_m) << " m, e_e "
@@ -106,10 +112,12 @@ void runBench(const BenchFlags& flags) {
 
   const BenchRow& paper = rowLabelled(report, SolverKind::Paper, "N=5000");
   const BenchRow& exact = rowLabelled(report, SolverKind::Exact, "default");
+  // The targets are set on the drawn sets; the impacts of play are scored against none.
+  const bool targets = !flags.from_shots;
   printRatio("speed ratio (paper N=5000 median_ns / exact default median_ns)",
-             paper.median_ns / exact.median_ns, kSpeedTarget);
+             paper.median_ns / exact.median_ns, targets ? kSpeedTarget : 0);
   printRatio("accuracy ratio (paper N=5000 max_error / exact default max_error)",
-             paper.max_error / exact.max_error, kAccuracyTarget);
+             paper.max_error / exact.max_error, targets ? kAccuracyTarget : 0);
 
   if (csv) {
     csv->stream() << header << '\n';
@@ -126,7 +134,7 @@ void addBenchCushionCommand(CLI::App& bench) {
   CLI::App* command = bench.add_subcommand(
       "cushion",
       "Time the paper and exact cushion solvers and measure their error against a "
-      "converged reference, over one fixed seeded set of impacts");
+      "converged reference, over one fixed seeded set of impacts (or the impacts of random shots)");
   command->add_option("--csv", flags->csv_path, "also write the table to this CSV file")
       ->check(notEmpty());
   command->add_option("--impacts", flags->impacts, "impacts in the set (a smoke run can use few)")

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "engine/contact_geometry.h"
 #include "engine/shot_simulator.h"
@@ -45,27 +46,28 @@ std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Sc
   std::vector<physics::BallVelocity> impacts;
   for (std::size_t i = 0; i < shots.size(); ++i) {
     const engine::Scene& shot = shots[i];
-    const physics::CushionParams cushion = engine::simulationParamsFor(shot).cushion;
-    if (i == 0) {
-      *params = cushion;
-    } else if (cushion.mass_kg != params->mass_kg || cushion.radius_m != params->radius_m ||
-               cushion.contact_height_m != params->contact_height_m ||
-               cushion.restitution != params->restitution ||
-               cushion.cushion_friction != params->cushion_friction ||
-               cushion.cloth_friction != params->cloth_friction) {
-      throw std::logic_error("cushionImpactsOf: the shots do not share one cushion");
+    // One table and ball set throughout, so that one cushion stands for every impact.
+    if (shot.table.name != shots[0].table.name || shot.ball_set.name != shots[0].ball_set.name)
+      throw std::logic_error("cushionImpactsOf: the shots do not share one table and ball set");
+    engine::SceneRun run;
+    try {
+      run = engine::runScene(shot);
+    } catch (const std::exception& failure) {
+      throw std::runtime_error("random single shot " + std::to_string(i + 1) + ": " +
+                               failure.what());
     }
     const engine::TableGeometry table = engine::geometryOf(shot.table);
-    for (const engine::Event& event : engine::runScene(shot).result.events) {
+    for (const engine::Event& event : run.result.events) {
       if (event.kind != engine::EventKind::Cushion && event.kind != engine::EventKind::Jaw)
         continue;
       const physics::BallState& ball = event.before[0];
       const engine::ContactFrame frame(
           engine::contactNormal(table, event.kind, event.index, ball.position));
       const physics::BallVelocity incoming = frame.toLocal(ball);
-      if (incoming.v.y() > 0) impacts.push_back(incoming);
+      if (incoming.v.y() > 0) impacts.push_back(incoming);  // the loop's rule for an impact
     }
   }
+  if (!shots.empty()) *params = engine::simulationParamsFor(shots[0]).cushion;
   return impacts;
 }
 

@@ -20,8 +20,9 @@ engine::Scene nineFootPoolScene();
 std::vector<engine::Scene> randomSingleShots(int count);
 
 // Every cushion and jaw impact of the shots, in order, as the cushion model met it: the incoming
-// ball in the contact's local frame (pressed contacts, which are no impact, left out). The shots
-// run with their scenes' physics; `params` is set to their cushion's (all shots share one table).
+// ball in the contact's local frame (contacts not moving into the cushion, which are no impact,
+// left out). The shots run with their scenes' physics and must share one table and ball set;
+// `params` is set to their cushion's. A shot that fails throws std::runtime_error naming it.
 std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Scene>& shots,
                                                     physics::CushionParams* params);
 
