@@ -34,8 +34,10 @@ void validateCushionParams(const CushionParams& p) {
                     " and at most R (1 + sin 80 deg) = " + valueText(highest_m) +
                     " (the nose touches the upper half of the ball, below its top)");
   }
-  if (!(p.restitution > 0 && p.restitution <= 1)) {
-    rejectValue("cushion restitution e_e", p.restitution, "it must lie in (0, 1]");
+  if (!(p.restitution >= kMinRestitution && p.restitution <= 1)) {
+    rejectValue("cushion restitution e_e", p.restitution,
+                "it must lie in [" + valueText(kMinRestitution) +
+                    ", 1] (below it the exact solver could lose the rebound)");
   }
   const double s = contactSinTheta(p);
   const double c = std::sqrt(1 - s * s);
@@ -57,8 +59,8 @@ void validateCushionParams(const CushionParams& p) {
       c - p.cushion_friction * s - p.cloth_friction * (s + p.cushion_friction * c);
   if (!(worst_normal_rate >= kMinNormalRateShare * c)) {
     rejectValue("cloth friction mu_s", p.cloth_friction,
-                "with mu_w = " + valueText(p.cushion_friction) + " and sin(theta) = " +
-                    valueText(s) + " it must be at most " +
+                "with mu_w = " + valueText(p.cushion_friction) +
+                    " and sin(theta) = " + valueText(s) + " it must be at most " +
                     valueText((c * (1 - kMinNormalRateShare) - p.cushion_friction * s) /
                               (s + p.cushion_friction * c)) +
                     ", or friction could (nearly) hold the ball against the cushion");

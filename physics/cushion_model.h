@@ -23,7 +23,7 @@ struct CushionParams {
   double radius_m = 0.02625;
   double contact_height_m =
       0.02625 * 7.0 / 5.0;         // nose height above the slate; h = 7R/5 in the paper
-  double restitution = 0.98;       // e_e, energetic coefficient (Stronge), in (0, 1]
+  double restitution = 0.98;       // e_e, energetic coefficient (Stronge), in [1e-6, 1]
   double cushion_friction = 0.14;  // mu_w, ball on cushion nose
   double cloth_friction = 0.212;   // mu_s, ball on cloth
 };
@@ -46,6 +46,12 @@ inline constexpr double kMaxNoseSinTheta = 0.98480775301220806;  // sin(80 deg)
 // 1/3 at sin theta = 0.8, within 1e-6 of the bound; at 1e-3 it took 8800 evaluations, at 1e-2
 // 2000). Real tables keep about 0.8.
 inline constexpr double kMinNormalRateShare = 1e-2;
+// The least energetic restitution accepted. Restitution ends where the normal work has fallen
+// from W_c to (1 - e_e^2) W_c, and the exact solver locates that to 1e-4 of its tolerance times
+// W_c: at the default tolerance an e_e below about 5e-8 (e_e^2 W_c under that residual) ended
+// restitution at once and lost the rebound, -e_e v_y0, which is then more than the 1e-9 V0 the
+// solver promises. Real cushions lie near 0.7 to 0.98; 1e-6 keeps room for every tolerance.
+inline constexpr double kMinRestitution = 1e-6;
 // The ball masses they accept, kg: cue-sport balls weigh 0.1 to 0.3 kg; subnormal masses (found by
 // fuzzing: 1e-309 kg) stalled the ball-ball integration the same way.
 inline constexpr double kMinBallMass_kg = 1e-3;

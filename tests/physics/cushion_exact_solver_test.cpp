@@ -1167,6 +1167,24 @@ TEST(CushionExactSolver, DefaultToleranceIsWithinOneBillionthOnRollingBalls) {
   EXPECT_GE(from_rest, 50) << "too few impacts start with the cloth slip at rest";
 }
 
+// At the least restitution accepted the rebound, about -e_e v_y0, is kept at the default tolerance
+// and within the promise of the converged solution (below about 5e-8 restitution ended at once
+// and the ball stayed at the cushion, up to 5e-8 V0 off).
+TEST(CushionExactSolver, TheLeastRestitutionKeepsItsRebound) {
+  CushionParams p = poolCushion();
+  p.restitution = kMinRestitution;
+  for (double alpha_deg : {10.0, 45.0, 69.0, 90.0, 150.0}) {
+    const double speed = 1.0, R = p.radius_m;
+    const BallVelocity in = incomingBall(speed, degrees(alpha_deg), speed / R, 0);
+    SCOPED_TRACE("alpha " + std::to_string(alpha_deg) + " deg");
+    const CushionImpactResult fast = solveExact(p, in);
+    const CushionImpactResult converged = solveExact(p, in, kConvergedTolerance);
+    EXPECT_LT(converged.after.v.y(), -0.5 * p.restitution * in.v.y());
+    EXPECT_LT(fast.after.v.y(), -0.5 * p.restitution * in.v.y()) << "the rebound is kept";
+    EXPECT_LE(velocityDifference(fast.after, converged.after, R), kSolverAccuracy * speed);
+  }
+}
+
 // A rolling ball hitting nearly head-on (from the shipped 9-ball break): the cloth slides off from
 // rest and the cushion slip passes through zero late in restitution, within about 1e-10 V0 of it.
 // The cost is the solver's (evaluations are deterministic, unlike times): it took 1097 and 930

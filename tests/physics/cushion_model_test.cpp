@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "physics/cushion_exact_solver.h"
+#include "physics/value_text.h"
 #include "tests/physics/cushion_test_support.h"
 #include "tests/physics/rejection_test_support.h"
 
@@ -328,15 +329,16 @@ TEST(CushionModelValidation, RejectsNonPhysicalMassRadiusAndContactHeight) {
                  {"contact height", "0.078125"});
 }
 
-TEST(CushionModelValidation, RejectsRestitutionOutsideZeroToOne) {
-  for (double e : {0.0, 1.5, -0.25, 1.0000000000000002}) {
+TEST(CushionModelValidation, RejectsRestitutionOutsideItsRange) {
+  for (double e : {0.0, 1.5, -0.25, 1.0000000000000002, 5e-8, std::nextafter(kMinRestitution, 0)}) {
     CushionParams p = exactParams();
     p.restitution = e;
-    std::ostringstream value;
-    value.precision(17);
-    value << "e_e = " << e << " ";
-    expectRejected([p] { validateCushionParams(p); }, {value.str(), "(0, 1]"});
+    expectRejected([p] { validateCushionParams(p); },
+                   {"e_e = " + valueText(e) + " ", "[1e-06, 1]"});
   }
+  CushionParams least = exactParams();
+  least.restitution = kMinRestitution;
+  EXPECT_NO_THROW(validateCushionParams(least));
 }
 
 TEST(CushionModelValidation, RejectsCushionFrictionAtOrAboveTanTheta) {
