@@ -169,7 +169,7 @@ constexpr int kMaxMissedLandings = 2;
 // bench set exceed 1e-9 V0 at the default tolerance.)
 constexpr double kMinErrorShare = 0.2;
 // A slipping slip below the regularizing slip that grows may change by at most this multiple of its
-// own size in one step (so grow by at most 70 %, and turn by at most about 44 degrees). Near a slip
+// own size in one step (so grow by at most 70 %, and turn by at most about 41 degrees). Near a slip
 // that small (a nose slip growing again after passing close by zero) a longer step comes near the
 // branch point of |u| for complex impulses, where the embedded error estimate fails: measured 5 to
 // 30 times below the step's true error. Such steps made the largest errors of the bench's impacts

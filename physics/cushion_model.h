@@ -50,7 +50,8 @@ inline constexpr double kMinNormalRateShare = 1e-2;
 // from W_c to (1 - e_e^2) W_c, and the exact solver locates that to 1e-4 of its tolerance times
 // W_c: at the default tolerance an e_e below about 5e-8 (e_e^2 W_c under that residual) ended
 // restitution at once and lost the rebound, -e_e v_y0, which is then more than the 1e-9 V0 the
-// solver promises. Real cushions lie near 0.7 to 0.98; 1e-6 keeps room for every tolerance.
+// solver promises. Real cushions lie near 0.7 to 0.98. At 1e-6 the rebound is kept at tolerances
+// up to about 1e-8; above them the 1e-6 V0 it could lose lies within those tolerances' errors.
 inline constexpr double kMinRestitution = 1e-6;
 // The ball masses they accept, kg: cue-sport balls weigh 0.1 to 0.3 kg; subnormal masses (found by
 // fuzzing: 1e-309 kg) stalled the ball-ball integration the same way.

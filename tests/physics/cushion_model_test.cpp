@@ -292,7 +292,7 @@ TEST(CushionModelValidation, AcceptsTheDefaultsAndPoolGeometry) {
   EXPECT_NO_THROW(validateCushionParams(pool));
   EXPECT_NO_THROW(validateCushionParams(exactParams()));
   CushionParams elastic_frictionless = exactParams();
-  elastic_frictionless.restitution = 1.0;  // the closed end of (0, 1]
+  elastic_frictionless.restitution = 1.0;  // the closed end of [1e-6, 1]
   elastic_frictionless.cushion_friction = 0;
   elastic_frictionless.cloth_friction = 0;
   EXPECT_NO_THROW(validateCushionParams(elastic_frictionless));
