@@ -28,9 +28,10 @@
 //
 // A slipping contact's friction is along u / |u|, which turns infinitely fast as u -> 0: in P the
 // equations are singular there, and steps in P chatter or crawl toward the zero. So the independent
-// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + s0). In tau a
-// slip that vanishes decays exponentially and one that turns does so smoothly, while a slip far
-// above s0 runs at sigma ~ 1. When a slip is below the vanishing threshold the contact is held: it
+// variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + s0) (leaving
+// out a slip that falls along its line, below, or grows well above s0). In tau a slip that
+// vanishes decays exponentially and one that turns does so smoothly, while a slip far above s0
+// runs at sigma ~ 1. When a slip is below the vanishing threshold the contact is held: it
 // sticks if its friction cone can hold it; otherwise it slides along the one direction phi* in
 // which its slip grows along itself, as long as that law is accurate (an event ends it). A stuck
 // contact whose cone stops holding it (an event) slips along the friction it needed, so friction
@@ -63,6 +64,14 @@ enum : int { kP = 0, kAx = 1, kAy = 2, kBx = 3, kBy = 4, kWork = 5 };
 // own slip sets the pace (its direction turns over impulses of about M |u| / mu). A held contact
 // whose slip grows to it slips on as an ordinary slipping contact.
 constexpr double kRegularizingSlipFraction = 1e-3;
+// A slipping contact whose slip is at least this multiple of the regularizing slip and growing
+// runs in P (its factor in sigma is 1): it moves away from the zero the change of variable guards,
+// and its factor's own variation (from about 0.8 toward 1 as it grows) only adds curvature in tau.
+// Most of it is a slip released from rest growing under the other contact's sliding (a ball
+// rolling into the cushion): on the impacts of play 7.5 % fewer evaluations (423 to 391 per
+// impact), the same largest errors; 1, 2 and 10 gave 394, 393 and 399. Taking out of sigma every
+// slip above it, shrinking ones too, gave 399 at 5 and 416 at 20.
+constexpr double kRecedingSlipMultiple = 5;
 // A slipping contact whose slip shrinks along its own line runs in P (its factor in sigma is 1)
 // with its friction held along that line, as long as the turn its slip rate gives it would carry
 // the slip off the line by at most this share of the misalignment limit (kCreepErrorFraction) by
@@ -375,6 +384,7 @@ struct ContactState {
   // How its slip grows from zero: as the impulse since then (1: held as it vanished, its cone not
   // holding it) or as its square (2: its cone held it until now, so its growth starts at zero).
   double creep_growth_order = 1;
+  bool receding = false;  // slipping, its slip growing and above kRecedingSlipMultiple x s0
   int small_slip_steps = 0;  // consecutive accepted steps with a slip below kStagnantSlipMultiple
   // m/s: released from its held law with a slip of a tenth of this; taken as sliding steadily
   // along phi* again only once its slip has grown to it (see kSteadyRearmGrowth).
@@ -441,8 +451,11 @@ class ExactImpact {
   // while the other contact slides. Only then is its law accurate beyond a small slip; otherwise
   // (the other contact held too) the slip measured against s0 also ends it.
   bool lagCorrected(int k) const { return contacts_[k].creep_from_rest && !held(1 - k); }
-  // Whether slipping contact k's factor |u| / (|u| + s0) is in sigma (not while it approaches).
-  bool regularized(int k) const { return slipping(k) && !contacts_[k].approaching; }
+  // Whether slipping contact k's factor |u| / (|u| + s0) is in sigma (not while it approaches or
+  // recedes).
+  bool regularized(int k) const {
+    return slipping(k) && !contacts_[k].approaching && !contacts_[k].receding;
+  }
 
   // The contact matrix (see the top of the file) times (a_x, a_y, b_x, b_y); half its entries are
   // 0.
@@ -856,7 +869,8 @@ class ExactImpact {
     const double uCy = slip0_[1].y() - (c_ * P + coupling_y_ * ay + 3.5 * by) * inverse_mass_;
     const double speed_I = std::sqrt(uIx * uIx + uIy * uIy);
     const double speed_C = std::sqrt(uCx * uCx + uCy * uCy);
-    const double inverse = 1 / ((speed_I + regularizing_slip_) * (speed_C + regularizing_slip_));
+    const double inverse = 1 / ((speed_I + (contacts_[0].receding ? 0.0 : regularizing_slip_)) *
+                                (speed_C + (contacts_[1].receding ? 0.0 : regularizing_slip_)));
     const double sigma = speed_I * speed_C * inverse;
     const double nose = mu_[0] * speed_C * inverse;
     const double cloth = mu_[1] * (s_ * speed_I + c_ * mu_[0] * uIy) * inverse;
@@ -892,7 +906,7 @@ class ExactImpact {
         fax = mu_[0] * contacts_[0].direction.x();
         fay = mu_[0] * contacts_[0].direction.y();
       }
-      if (!contacts_[0].approaching) {
+      if (regularized(0)) {
         sigma_numerator *= speed;
         sigma_denominator *= speed + regularizing_slip_;
       }
@@ -913,7 +927,7 @@ class ExactImpact {
         fbx = limit * contacts_[1].direction.x();
         fby = limit * contacts_[1].direction.y();
       }
-      if (!contacts_[1].approaching) {
+      if (regularized(1)) {
         sigma_numerator *= speed;
         sigma_denominator *= speed + regularizing_slip_;
       }
@@ -1053,13 +1067,13 @@ class ExactImpact {
       if (!slipping(k) || contacts_[k].approaching) continue;
       const int other = 1 - k;
       double other_factor = 1;  // the other contact's factor in sigma
-      if (slipping(other) && !contacts_[other].approaching) {
+      if (regularized(other)) {
         const double speed = u[other].norm();
         other_factor = speed / (speed + regularizing_slip_);
       }
       const double friction = k == 0 ? mu_[0] : mu_[1] * (s_ + c_ * mu_[0]);
       rate = std::max(rate, 3.5 * friction * inverse_mass_ * other_factor /
-                                (u[k].norm() + regularizing_slip_));
+                                (u[k].norm() + (regularized(k) ? regularizing_slip_ : 0.0)));
     }
     return rate;
   }
@@ -1332,6 +1346,7 @@ class ExactImpact {
     if (mode == ContactMode::Stick) contacts_[1 - k].creep_from_rest = false;
     contacts_[k].approaching = false;
     contacts_[k].approach_blocked = false;
+    contacts_[k].receding = false;
   }
 
   // Records the contacts' physical modes at z where they changed: a contact sticks while it is held
@@ -1439,8 +1454,9 @@ class ExactImpact {
     return true;
   }
 
-  // Which slipping contacts approach zero along their line (see kApproachEntry), from the rate
-  // dz/dtau at z. When that changes, tau changes meaning: the rate is taken again and the next
+  // Which slipping contacts approach zero along their line (see kApproachEntry) and which recede
+  // from it (kRecedingSlipMultiple), from the rate dz/dtau at z. When that changes, tau changes
+  // meaning: the rate is taken again and the next
   // step h rescaled to cover the same impulse. Returns whether it changed.
   // du/dtau of both contacts under the rate dz/dtau.
   std::array<Eigen::Vector2d, 2> slipChanges(const State& r) const {
@@ -1474,6 +1490,12 @@ class ExactImpact {
       // slip that turn builds up off the line by the time it reaches zero).
       const bool approaching = slipping(k) && !contact.approach_blocked && along < 0 &&
                                u[k].norm() * across <= -kApproachEntry * creep_error_limit_ * along;
+      const bool receding = slipping(k) && !approaching && along > 0 &&
+                            u[k].norm() >= kRecedingSlipMultiple * regularizing_slip_;
+      if (receding != contact.receding) {
+        contact.receding = receding;
+        changed = true;
+      }
       if (approaching == contact.approaching) continue;
       contact.approaching = approaching;
       if (approaching) contact.approach_direction = u[k].normalized();
