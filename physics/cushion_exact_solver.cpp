@@ -29,7 +29,7 @@
 // A slipping contact's friction is along u / |u|, which turns infinitely fast as u -> 0: in P the
 // equations are singular there, and steps in P chatter or crawl toward the zero. So the independent
 // variable is tau with dP/dtau = sigma = prod over slipping contacts of |u| / (|u| + s0) (leaving
-// out a slip that falls along its line, below, or grows well above s0). In tau a slip that
+// out a slip that falls along its line or grows well above s0, below). In tau a slip that
 // vanishes decays exponentially and one that turns does so smoothly, while a slip far above s0
 // runs at sigma ~ 1. When a slip is below the vanishing threshold the contact is held: it
 // sticks if its friction cone can hold it; otherwise it slides along the one direction phi* in
@@ -37,12 +37,12 @@
 // contact whose cone stops holding it (an event) slips along the friction it needed, so friction
 // stays continuous.
 //
-// Three special cases cut the cost where the general machinery is slow (docs/cushion.md, "Cost"):
+// Four special cases cut the cost where the general machinery is slow (docs/cushion.md, "Cost"):
 // the cloth contact's phi* while the nose slides is r0 / |r0| in closed form (its own friction
 // enters its slip rate isotropically); a slip growing from rest while the other contact slides
-// follows a held law corrected for the lag of its direction behind phi*; and a slip falling along
-// its own line runs in P with its friction along that line until it vanishes, instead of decaying
-// exponentially in tau.
+// follows a held law corrected for the lag of its direction behind phi*; a slip falling along its
+// own line runs in P with its friction along that line until it vanishes, instead of decaying
+// exponentially in tau; and a slip growing well above s0 runs in P too.
 //
 // The system in tau is integrated with the Dormand-Prince 8(5,3) pair, its error measured across
 // the path (an error of tau alone moves no state off it), its steps capped at a few time constants
@@ -67,10 +67,11 @@ constexpr double kRegularizingSlipFraction = 1e-3;
 // A slipping contact whose slip is at least this multiple of the regularizing slip and growing
 // runs in P (its factor in sigma is 1): it moves away from the zero the change of variable guards,
 // and its factor's own variation (from about 0.8 toward 1 as it grows) only adds curvature in tau.
-// Most of it is a slip released from rest growing under the other contact's sliding (a ball
+// Most such slips are a slip released from rest growing under the other contact's sliding (a ball
 // rolling into the cushion): on the impacts of play 7.5 % fewer evaluations (423 to 391 per
-// impact), the same largest errors; 1, 2 and 10 gave 394, 393 and 399. Taking out of sigma every
-// slip above it, shrinking ones too, gave 399 at 5 and 416 at 20.
+// impact) and 2 % fewer on the pool bench's, 1 to 2 % more on the snooker bench's and the spinning
+// and grippy sets', the same largest errors; 1, 2 and 10 gave 394, 393 and 399 on the impacts of
+// play. Taking out of sigma every slip above it, shrinking ones too, gave 399 at 5 and 416 at 20.
 constexpr double kRecedingSlipMultiple = 5;
 // A slipping contact whose slip shrinks along its own line runs in P (its factor in sigma is 1)
 // with its friction held along that line, as long as the turn its slip rate gives it would carry
@@ -384,13 +385,15 @@ struct ContactState {
   // How its slip grows from zero: as the impulse since then (1: held as it vanished, its cone not
   // holding it) or as its square (2: its cone held it until now, so its growth starts at zero).
   double creep_growth_order = 1;
-  bool receding = false;  // slipping, its slip growing and above kRecedingSlipMultiple x s0
   int small_slip_steps = 0;  // consecutive accepted steps with a slip below kStagnantSlipMultiple
   // m/s: released from its held law with a slip of a tenth of this; taken as sliding steadily
   // along phi* again only once its slip has grown to it (see kSteadyRearmGrowth).
   double steady_rearm_slip = 0;
   // Slipping and approaching zero along its line: runs in P (see kApproachEntry).
   bool approaching = false;
+  // Its slip grows away from zero, above kRecedingSlipMultiple x s0: it runs in P (never together
+  // with approaching; a slip that large is never held or released directly).
+  bool receding = false;
   bool approach_blocked = false;  // left its line: not again until its mode changes
   Eigen::Vector2d approach_direction = Eigen::Vector2d::UnitX();  // its slip's line when it began
 };
@@ -858,7 +861,8 @@ class ExactImpact {
   // rate() while both contacts slide (bothSliding), with the speeds cancelled out of it: with d =
   // (|u_I| + s0)(|u_C| + s0), sigma = |u_I| |u_C| / d, the nose's friction rate sigma mu_w u_I /
   // |u_I| = (mu_w |u_C| / d) u_I and the cloth's sigma mu_s q u_C / |u_C| with q = s + c mu_w
-  // u_Iy / |u_I| is (mu_s (s |u_I| + c mu_w u_Iy) / d) u_C: one division, none by a speed.
+  // u_Iy / |u_I| is (mu_s (s |u_I| + c mu_w u_Iy) / d) u_C: one division, none by a speed. A
+  // receding slip's s0 is taken as 0 (its factor in sigma is 1); at 5 s0 or more it keeps d from 0.
   State bothSlidingRate(const State& z) {
     ++evaluations_;
     const double P = z[kP], ax = z[kAx], ay = z[kAy], bx = z[kBx], by = z[kBy];
@@ -1059,8 +1063,9 @@ class ExactImpact {
   // An upper bound on the rate (per unit tau) at which a slipping contact's slip direction settles:
   // across its direction a slip u moves under its own friction at up to 7/2 mu / M per unit P (the
   // largest entry of the contacts' inverse effective mass, times M), which turns it at that over
-  // |u|; dP/dtau = sigma turns the |u| of its own factor into |u| + s0. The cloth's friction is
-  // mu_s q with q at most s + c mu_w. Zero when no contact slips with friction along its slip.
+  // |u|; dP/dtau = sigma turns the |u| of its own factor into |u| + s0 (a receding slip has none:
+  // its |u| stays). The cloth's friction is mu_s q with q at most s + c mu_w. Zero when no contact
+  // slips with friction along its slip.
   double slipDirectionRate(const std::array<Eigen::Vector2d, 2>& u) const {
     double rate = 0;
     for (int k = 0; k < 2; ++k) {
@@ -1454,10 +1459,6 @@ class ExactImpact {
     return true;
   }
 
-  // Which slipping contacts approach zero along their line (see kApproachEntry) and which recede
-  // from it (kRecedingSlipMultiple), from the rate dz/dtau at z. When that changes, tau changes
-  // meaning: the rate is taken again and the next
-  // step h rescaled to cover the same impulse. Returns whether it changed.
   // du/dtau of both contacts under the rate dz/dtau.
   std::array<Eigen::Vector2d, 2> slipChanges(const State& r) const {
     const Eigen::Vector4d response = contactResponse(r[kAx], r[kAy], r[kBx], r[kBy]);
@@ -1477,6 +1478,10 @@ class ExactImpact {
     return left / fall;
   }
 
+  // Which slipping contacts approach zero along their line (see kApproachEntry) and which recede
+  // from it (kRecedingSlipMultiple), from the rate dz/dtau at z. When that changes, tau changes
+  // meaning: the rate is taken again and the next step h rescaled to cover the same impulse.
+  // Returns whether it changed.
   bool updateApproaches(const State& z, const std::array<Eigen::Vector2d, 2>& u, State* rate_here,
                         double* h) {
     const State& r = *rate_here;
@@ -1618,6 +1623,7 @@ CushionImpactResult ExactImpact::run() {
 
   State k1 = rate(z);
   double h = kFirstStepFraction * M_ * vy0_;
+  updateApproaches(z, slips(z), &k1, &h);  // a slip may already grow above 5 s0 (or fall)
   for (int steps = 0;; ++steps) {
     if (steps == kMaxSteps) throw std::logic_error("exact cushion solver exceeded its step budget");
     // Contact changes due here. A slip that has decayed below the threshold has vanished: the
@@ -1651,6 +1657,7 @@ CushionImpactResult ExactImpact::run() {
       previous_error_ = 0;
       missed_landings_ = 0;
       k1 = rate(z);
+      updateApproaches(z, slips(z), &k1, &h);  // judged again under the new laws
       continue;
     }
     FixedList<Event, kMaxStepEvents> events;
