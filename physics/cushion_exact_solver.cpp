@@ -439,6 +439,9 @@ class ExactImpact {
     coupling_x_ = 1 - 2.5 * s_;
     coupling_y_ = 2.5 - s_;
     diagonal_y_ = s_ * s_ + 2.5;
+    // See slipDirectionRate: the cloth's friction at its largest is mu_s (s + c mu_w).
+    direction_rate_scale_ = {3.5 * mu_[0] * inverse_mass_,
+                             3.5 * (mu_[1] * (s_ + c_ * mu_[0])) * inverse_mass_};
   }
 
   CushionImpactResult run();
@@ -459,6 +462,8 @@ class ExactImpact {
   bool regularized(int k) const {
     return slipping(k) && !contacts_[k].approaching && !contacts_[k].receding;
   }
+  // The s0 of sliding contact k's factor |u| / (|u| + s0) in sigma: 0 while it recedes (factor 1).
+  double factorSlip(int k) const { return contacts_[k].receding ? 0.0 : regularizing_slip_; }
 
   // The contact matrix (see the top of the file) times (a_x, a_y, b_x, b_y); half its entries are
   // 0.
@@ -873,8 +878,7 @@ class ExactImpact {
     const double uCy = slip0_[1].y() - (c_ * P + coupling_y_ * ay + 3.5 * by) * inverse_mass_;
     const double speed_I = std::sqrt(uIx * uIx + uIy * uIy);
     const double speed_C = std::sqrt(uCx * uCx + uCy * uCy);
-    const double inverse = 1 / ((speed_I + (contacts_[0].receding ? 0.0 : regularizing_slip_)) *
-                                (speed_C + (contacts_[1].receding ? 0.0 : regularizing_slip_)));
+    const double inverse = 1 / ((speed_I + factorSlip(0)) * (speed_C + factorSlip(1)));
     const double sigma = speed_I * speed_C * inverse;
     const double nose = mu_[0] * speed_C * inverse;
     const double cloth = mu_[1] * (s_ * speed_I + c_ * mu_[0] * uIy) * inverse;
@@ -1076,9 +1080,8 @@ class ExactImpact {
         const double speed = u[other].norm();
         other_factor = speed / (speed + regularizing_slip_);
       }
-      const double friction = k == 0 ? mu_[0] : mu_[1] * (s_ + c_ * mu_[0]);
-      rate = std::max(rate, 3.5 * friction * inverse_mass_ * other_factor /
-                                (u[k].norm() + (regularized(k) ? regularizing_slip_ : 0.0)));
+      rate = std::max(rate,
+                      direction_rate_scale_[k] * other_factor / (u[k].norm() + factorSlip(k)));
     }
     return rate;
   }
@@ -1482,8 +1485,8 @@ class ExactImpact {
   // from it (kRecedingSlipMultiple), from the rate dz/dtau at z. When that changes, tau changes
   // meaning: the rate is taken again and the next step h rescaled to cover the same impulse.
   // Returns whether it changed.
-  bool updateApproaches(const State& z, const std::array<Eigen::Vector2d, 2>& u, State* rate_here,
-                        double* h) {
+  bool updateSlipsRunInP(const State& z, const std::array<Eigen::Vector2d, 2>& u,
+                         State* rate_here, double* h) {
     const State& r = *rate_here;
     const std::array<Eigen::Vector2d, 2> change = slipChanges(r);  // du/dtau
     bool changed = false;
@@ -1595,6 +1598,8 @@ class ExactImpact {
   // Entries of the contact matrix M G: [[7/2, 0, cx, 0], [0, s^2 + 5/2, 0, cy], [cx, 0, 7/2, 0],
   // [0, cy, 0, 7/2]] with cx = 1 - 5s/2, cy = 5/2 - s.
   double coupling_x_ = 0, coupling_y_ = 0, diagonal_y_ = 0;
+  // 7/2 mu / M per contact (1 / (N s)): how fast its own friction turns a slip of unit size.
+  std::array<double, 2> direction_rate_scale_{};
   State error_scale_;
   std::array<ContactState, 2> contacts_;
   bool compressing_ = true;
@@ -1623,7 +1628,7 @@ CushionImpactResult ExactImpact::run() {
 
   State k1 = rate(z);
   double h = kFirstStepFraction * M_ * vy0_;
-  updateApproaches(z, slips(z), &k1, &h);  // a slip may already grow above 5 s0 (or fall)
+  updateSlipsRunInP(z, slips(z), &k1, &h);  // a slip may already grow above 5 s0 (or fall)
   for (int steps = 0;; ++steps) {
     if (steps == kMaxSteps) throw std::logic_error("exact cushion solver exceeded its step budget");
     // Contact changes due here. A slip that has decayed below the threshold has vanished: the
@@ -1657,7 +1662,7 @@ CushionImpactResult ExactImpact::run() {
       previous_error_ = 0;
       missed_landings_ = 0;
       k1 = rate(z);
-      updateApproaches(z, slips(z), &k1, &h);  // judged again under the new laws
+      updateSlipsRunInP(z, slips(z), &k1, &h);  // judged again under the new laws
       continue;
     }
     FixedList<Event, kMaxStepEvents> events;
@@ -1738,7 +1743,7 @@ CushionImpactResult ExactImpact::run() {
         countSmallSlips(u_end);
         // A slip that starts or stops approaching changes the scale of tau: the phase-end
         // function's slope there is no longer comparable with this one's.
-        if (updateApproaches(z, u_end, &k1, &h)) last_step_ = 0;
+        if (updateSlipsRunInP(z, u_end, &k1, &h)) last_step_ = 0;
         reportModes(z);
         if (tracing) sample(z);
         // Predictive control (Gustafsson): where the accepted steps' errors follow a trend (a slip
@@ -1825,7 +1830,7 @@ CushionImpactResult ExactImpact::run() {
     reportModes(z);
     if (tracing && length > 0) sample(z);
     k1 = rate(z);
-    updateApproaches(z, slips(z), &k1, &h);
+    updateSlipsRunInP(z, slips(z), &k1, &h);
     if (!phase_ends) continue;
     if (!compressing_) {
       result_.final_impulse_Ns = z[kP];
