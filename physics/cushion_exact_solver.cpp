@@ -58,7 +58,12 @@ namespace baize::physics {
 namespace {
 
 using State = Eigen::Matrix<double, 6, 1>;  // (P, A_x, A_y, B_x, B_y: N s; W: J)
-enum : int { kP = 0, kAx = 1, kAy = 2, kBx = 3, kBy = 4, kWork = 5 };
+enum : int { kP = 0, kAx = 1, kAy = 2, kBx = 3, kBy = 4, kWork = 5, kStateSize = 6 };
+// While both contacts slide the Runge-Kutta stages also carry the slips (u_Ix, u_Iy, u_Cx, u_Cy;
+// m/s), which are affine in the state: summed with the stages, they reach each stage without the
+// contact matrix (see bothSlidingRate).
+using Extended = Eigen::Matrix<double, 10, 1>;
+enum : int { kUIx = 6, kUIy = 7, kUCx = 8, kUCy = 9 };
 
 // s0 of the change of variable, as a fraction of the velocity scale: below it a slipping contact's
 // own slip sets the pace (its direction turns over impulses of about M |u| / mu). A held contact
@@ -439,6 +444,9 @@ class ExactImpact {
     coupling_x_ = 1 - 2.5 * s_;
     coupling_y_ = 2.5 - s_;
     diagonal_y_ = s_ * s_ + 2.5;
+    scaled_ = {3.5 * inverse_mass_,         diagonal_y_ * inverse_mass_,
+               coupling_x_ * inverse_mass_, coupling_y_ * inverse_mass_,
+               s_ * c_ * inverse_mass_,     c_ * inverse_mass_};
     // See slipDirectionRate: the cloth's friction at its largest is mu_s (s + c mu_w).
     direction_rate_scale_ = {3.5 * mu_[0] * inverse_mass_,
                              3.5 * (mu_[1] * (s_ + c_ * mu_[0])) * inverse_mass_};
@@ -476,14 +484,16 @@ class ExactImpact {
   std::array<Eigen::Vector2d, 2> slips(const State& z) const {
     const Eigen::Vector4d response = contactResponse(z[kAx], z[kAy], z[kBx], z[kBy]);
     return {
-        Eigen::Vector2d(slip0_[0] -
-                        Eigen::Vector2d(response[0], response[1] - s_ * c_ * z[kP]) / M_),
-        Eigen::Vector2d(slip0_[1] - Eigen::Vector2d(response[2], response[3] + c_ * z[kP]) / M_)};
+        Eigen::Vector2d(slip0_[0] - Eigen::Vector2d(response[0], response[1] - s_ * c_ * z[kP]) *
+                                        inverse_mass_),
+        Eigen::Vector2d(slip0_[1] -
+                        Eigen::Vector2d(response[2], response[3] + c_ * z[kP]) * inverse_mass_)};
   }
   Eigen::Vector2d slip(int k, const State& z) const { return slips(z)[k]; }
 
-  double normalVelocity(const State& z) const {
-    return vy0_ - (c_ * z[kP] - s_ * z[kAy] + z[kBy]) / M_;
+  template <typename Vector>  // State, or Extended
+  double normalVelocity(const Vector& z) const {
+    return vy0_ - (c_ * z[kP] - s_ * z[kAy] + z[kBy]) * inverse_mass_;
   }
 
   // Friction per unit P under the given laws (a contact with a zero direction has no friction).
@@ -504,12 +514,13 @@ class ExactImpact {
       const Eigen::Vector2d g = mu_[1] * slide_C;
       f.a.y() = (s * c - (2.5 - s) * s * g.y()) / ((s * s + 2.5) + (2.5 - s) * c * g.y());
       const double table_rate = s + c * f.a.y();
-      f.a.x() = -(1 - 2.5 * s) * table_rate * g.x() / 3.5;
+      f.a.x() = -(1 - 2.5 * s) * table_rate * g.x() * (1 / 3.5);
       f.b = table_rate * g;
     } else {
       f.a = mu_[0] * slide_I;
       if (stick_C) {
-        f.b = Eigen::Vector2d(-(1 - 2.5 * s) * f.a.x() / 3.5, -(c + (2.5 - s) * f.a.y()) / 3.5);
+        f.b = Eigen::Vector2d(-(1 - 2.5 * s) * f.a.x() * (1 / 3.5),
+                              -(c + (2.5 - s) * f.a.y()) * (1 / 3.5));
       } else {
         f.b = mu_[1] * (s + c * f.a.y()) * slide_C;
       }
@@ -520,8 +531,8 @@ class ExactImpact {
   // d(slip_k)/dP under friction f.
   Eigen::Vector2d slipRate(int k, const Friction& f) const {
     const Eigen::Vector4d response = contactResponse(f.a.x(), f.a.y(), f.b.x(), f.b.y());
-    if (k == 0) return -Eigen::Vector2d(response[0], response[1] - s_ * c_) / M_;
-    return -Eigen::Vector2d(response[2], response[3] + c_) / M_;
+    if (k == 0) return -Eigen::Vector2d(response[0], response[1] - s_ * c_) * inverse_mass_;
+    return -Eigen::Vector2d(response[2], response[3] + c_) * inverse_mass_;
   }
 
   // How far inside its friction cone contact k's friction is, as a fraction of the cone.
@@ -555,8 +566,9 @@ class ExactImpact {
     const Eigen::Vector2d a = contacts_[0].frictionless
                                   ? Eigen::Vector2d::Zero()
                                   : Eigen::Vector2d(mu_[0] * laws.direction[0]);
-    return {Eigen::Vector2d(-coupling_x_ * a.x() / M_, -(c_ + coupling_y_ * a.y()) / M_),
-            3.5 * mu_[1] * (s_ + c_ * a.y()) / M_};
+    return {Eigen::Vector2d(-coupling_x_ * a.x() * inverse_mass_,
+                            -(c_ + coupling_y_ * a.y()) * inverse_mass_),
+            3.5 * mu_[1] * (s_ + c_ * a.y()) * inverse_mass_};
   }
 
   // The direction phi* a held contact k slides along when its cone cannot hold it: the slip it then
@@ -572,7 +584,7 @@ class ExactImpact {
       laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
       const Eigen::Vector2d r = slipRate(k, frictionFor(laws));
       *growth = r.dot(laws.direction[k]);
-      return cross(laws.direction[k], r) / (r.norm() + kRateFloor / M_);
+      return cross(laws.direction[k], r) / (r.norm() + kRateFloor * inverse_mass_);
     };
     // Secant iterations, started with a difference over a small angle: one evaluation of the
     // rate per iteration (a central difference takes three), converging almost as fast from the
@@ -869,28 +881,53 @@ class ExactImpact {
   // u_Iy / |u_I| is (mu_s (s |u_I| + c mu_w u_Iy) / d) u_C: one division, none by a speed. A
   // receding slip's s0 is taken as 0 (its factor in sigma is 1); at 5 s0 or more it keeps d from 0.
   State bothSlidingRate(const State& z) {
+    return bothSlidingRate(withSlips(z), normalVelocity(z)).head<kStateSize>();
+  }
+
+  // The same at the slips held in y (see Extended) and normal velocity v_y, with the slips' own
+  // rates: each rate is its numerator times the one inverse, so that the slips' rates are ready as
+  // soon as the rest and the stages need no contact matrix between them (the stages run one after
+  // another, each on the one before, and the dependent operations between them set the cost).
+  Extended bothSlidingRate(const Extended& y, double vy) {
     ++evaluations_;
-    const double P = z[kP], ax = z[kAx], ay = z[kAy], bx = z[kBx], by = z[kBy];
-    const double uIx = slip0_[0].x() - (3.5 * ax + coupling_x_ * bx) * inverse_mass_;
-    const double uIy =
-        slip0_[0].y() - (diagonal_y_ * ay + coupling_y_ * by - s_ * c_ * P) * inverse_mass_;
-    const double uCx = slip0_[1].x() - (coupling_x_ * ax + 3.5 * bx) * inverse_mass_;
-    const double uCy = slip0_[1].y() - (c_ * P + coupling_y_ * ay + 3.5 * by) * inverse_mass_;
+    const double uIx = y[kUIx], uIy = y[kUIy], uCx = y[kUCx], uCy = y[kUCy];
     const double speed_I = std::sqrt(uIx * uIx + uIy * uIy);
     const double speed_C = std::sqrt(uCx * uCx + uCy * uCy);
     const double inverse = 1 / ((speed_I + factorSlip(0)) * (speed_C + factorSlip(1)));
-    const double sigma = speed_I * speed_C * inverse;
-    const double nose = mu_[0] * speed_C * inverse;
-    const double cloth = mu_[1] * (s_ * speed_I + c_ * mu_[0] * uIy) * inverse;
-    const double vy = vy0_ - (c_ * P - s_ * ay + by) * inverse_mass_;
-    State r;
-    r[kP] = sigma;
-    r[kAx] = nose * uIx;
-    r[kAy] = nose * uIy;
-    r[kBx] = cloth * uCx;
-    r[kBy] = cloth * uCy;
-    r[kWork] = sigma * c_ * vy;
+    const double nose = mu_[0] * speed_C;
+    const double cloth = mu_[1] * (s_ * speed_I + c_ * mu_[0] * uIy);
+    const double sliding = speed_I * speed_C;
+    const double ax = nose * uIx, ay = nose * uIy, bx = cloth * uCx, by = cloth * uCy;
+    const ScaledContactMatrix& g = scaled_;
+    Extended r;
+    r[kP] = sliding * inverse;
+    r[kAx] = ax * inverse;
+    r[kAy] = ay * inverse;
+    r[kBx] = bx * inverse;
+    r[kBy] = by * inverse;
+    r[kWork] = (sliding * (c_ * vy)) * inverse;
+    r[kUIx] = -(g.diagonal_x * ax + g.coupling_x * bx) * inverse;
+    r[kUIy] = (g.sc * sliding - (g.diagonal_y * ay + g.coupling_y * by)) * inverse;
+    r[kUCx] = -(g.coupling_x * ax + g.diagonal_x * bx) * inverse;
+    r[kUCy] = -(g.c * sliding + (g.coupling_y * ay + g.diagonal_x * by)) * inverse;
     return r;
+  }
+
+  // z with its slips appended, and a rate with the slips' rates.
+  Extended withSlips(const State& z) const {
+    const std::array<Eigen::Vector2d, 2> u = slips(z);
+    Extended y;
+    y << z, u[0], u[1];
+    return y;
+  }
+  Extended withSlipRates(const State& r) const {
+    const ScaledContactMatrix& g = scaled_;
+    Extended y;
+    y << r, -(g.diagonal_x * r[kAx] + g.coupling_x * r[kBx]),
+        g.sc * r[kP] - (g.diagonal_y * r[kAy] + g.coupling_y * r[kBy]),
+        -(g.coupling_x * r[kAx] + g.diagonal_x * r[kBx]),
+        -(g.c * r[kP] + (g.coupling_y * r[kAy] + g.diagonal_x * r[kBy]));
+    return y;
   }
 
   // rate() when no contact is held (most of every impact), written out: the same equations as
@@ -962,77 +999,99 @@ class ExactImpact {
     return false;
   }
 
-  // One Dormand-Prince step, with the rate while both contacts slide inlined into its stages.
+  // One Dormand-Prince step. While both contacts slide its stages carry the slips (Extended) into
+  // bothSlidingRate, which GCC inlines into them.
   Step rungeKuttaStep(const State& z, const State& k1, double h) {
-    if (bothSliding())
-      return rungeKuttaStepWith(z, k1, h, [this](const State& y) { return bothSlidingRate(y); });
-    return rungeKuttaStepWith(z, k1, h, [this](const State& y) { return rate(y); });
+    if (bothSliding()) {
+      const Stages<Extended> extended =
+          dp853Stages(withSlips(z), withSlipRates(k1), h,
+                      [this](const Extended& y) { return bothSlidingRate(y, normalVelocity(y)); });
+      Stages<State> stages;
+      for (int i = 0; i < kStages; ++i) stages.k[i] = extended.k[i].head<kStateSize>();
+      stages.slope = extended.slope.head<kStateSize>();
+      stages.end = extended.end.head<kStateSize>();
+      stages.rate_at_end = extended.rate_at_end.head<kStateSize>();
+      return finishStep(z, stages, h);
+    }
+    return finishStep(z, dp853Stages(z, k1, h, [this](const State& y) { return rate(y); }), h);
   }
 
-  // z + h (c_1 k_1 + ... + c_n k_n), element by element.
+  // z + (h c_1 k_1 + ... + h c_n k_n), element by element, the coefficients given times h. The
+  // newest rate comes last, so that only one product and two sums wait for it (the stages run one
+  // after another, each on the one before).
+  template <typename Vector>
   struct Term {
     double coefficient;
-    const State* rate;
+    const Vector* rate;
   };
-  template <int n>
-  static State stageInput(const State& z, double h, const std::array<Term, n>& terms) {
-    State y;
-    for (int i = 0; i < State::RowsAtCompileTime; ++i) {
+  template <int n, typename Vector>
+  static Vector stageInput(const Vector& z, const std::array<Term<Vector>, n>& terms) {
+    Vector y;
+    for (int i = 0; i < Vector::RowsAtCompileTime; ++i) {
       double sum = terms[0].coefficient * (*terms[0].rate)[i];
       for (int j = 1; j < n; ++j) sum += terms[j].coefficient * (*terms[j].rate)[i];
-      y[i] = z[i] + h * sum;
+      y[i] = z[i] + sum;
     }
     return y;
   }
 
-  template <typename Rate>
-  Step rungeKuttaStepWith(const State& z, const State& k1, double h, const Rate& rate) {
+  // The twelve stages' rates of a step from z (k1 given), the step's end and the rate there.
+  static constexpr int kStages = 12;
+  template <typename Vector>
+  struct Stages {
+    std::array<Vector, kStages> k;
+    Vector slope, end, rate_at_end;  // slope: the weighted rates, (end - z) / h
+  };
+  template <typename Vector, typename Rate>
+  static Stages<Vector> dp853Stages(const Vector& z, const Vector& k1, double h, const Rate& rate) {
     using namespace dp853;
-    const State k2 = rate(stageInput<1>(z, h, {{{a21, &k1}}}));
-    const State k3 = rate(stageInput<2>(z, h, {{{a31, &k1}, {a32, &k2}}}));
-    const State k4 = rate(stageInput<2>(z, h, {{{a41, &k1}, {a43, &k3}}}));
-    const State k5 = rate(stageInput<3>(z, h, {{{a51, &k1}, {a53, &k3}, {a54, &k4}}}));
-    const State k6 = rate(stageInput<3>(z, h, {{{a61, &k1}, {a64, &k4}, {a65, &k5}}}));
-    const State k7 = rate(stageInput<4>(z, h, {{{a71, &k1}, {a74, &k4}, {a75, &k5}, {a76, &k6}}}));
-    const State k8 =
-        rate(stageInput<5>(z, h, {{{a81, &k1}, {a84, &k4}, {a85, &k5}, {a86, &k6}, {a87, &k7}}}));
-    const State k9 = rate(stageInput<6>(
-        z, h, {{{a91, &k1}, {a94, &k4}, {a95, &k5}, {a96, &k6}, {a97, &k7}, {a98, &k8}}}));
-    const State k10 = rate(stageInput<7>(z, h,
-                                         {{{a101, &k1},
-                                           {a104, &k4},
-                                           {a105, &k5},
-                                           {a106, &k6},
-                                           {a107, &k7},
-                                           {a108, &k8},
-                                           {a109, &k9}}}));
-    const State k11 = rate(stageInput<8>(z, h,
-                                         {{{a111, &k1},
-                                           {a114, &k4},
-                                           {a115, &k5},
-                                           {a116, &k6},
-                                           {a117, &k7},
-                                           {a118, &k8},
-                                           {a119, &k9},
-                                           {a1110, &k10}}}));
-    const State k12 = rate(stageInput<9>(z, h,
-                                         {{{a121, &k1},
-                                           {a124, &k4},
-                                           {a125, &k5},
-                                           {a126, &k6},
-                                           {a127, &k7},
-                                           {a128, &k8},
-                                           {a129, &k9},
-                                           {a1210, &k10},
-                                           {a1211, &k11}}}));
-    State slope;
-    for (int i = 0; i < State::RowsAtCompileTime; ++i) {
+    using T = Term<Vector>;
+    const Vector k2 = rate(stageInput<1, Vector>(z, {{T{h * a21, &k1}}}));
+    const Vector k3 = rate(stageInput<2, Vector>(z, {{T{h * a31, &k1}, T{h * a32, &k2}}}));
+    const Vector k4 = rate(stageInput<2, Vector>(z, {{T{h * a41, &k1}, T{h * a43, &k3}}}));
+    const Vector k5 =
+        rate(stageInput<3, Vector>(z, {{T{h * a51, &k1}, T{h * a53, &k3}, T{h * a54, &k4}}}));
+    const Vector k6 =
+        rate(stageInput<3, Vector>(z, {{T{h * a61, &k1}, T{h * a64, &k4}, T{h * a65, &k5}}}));
+    const Vector k7 = rate(stageInput<4, Vector>(
+        z, {{T{h * a71, &k1}, T{h * a74, &k4}, T{h * a75, &k5}, T{h * a76, &k6}}}));
+    const Vector k8 = rate(stageInput<5, Vector>(
+        z,
+        {{T{h * a81, &k1}, T{h * a84, &k4}, T{h * a85, &k5}, T{h * a86, &k6}, T{h * a87, &k7}}}));
+    const Vector k9 =
+        rate(stageInput<6, Vector>(z, {{T{h * a91, &k1}, T{h * a94, &k4}, T{h * a95, &k5},
+                                        T{h * a96, &k6}, T{h * a97, &k7}, T{h * a98, &k8}}}));
+    const Vector k10 = rate(stageInput<7, Vector>(
+        z, {{T{h * a101, &k1}, T{h * a104, &k4}, T{h * a105, &k5}, T{h * a106, &k6},
+             T{h * a107, &k7}, T{h * a108, &k8}, T{h * a109, &k9}}}));
+    const Vector k11 = rate(stageInput<8, Vector>(
+        z, {{T{h * a111, &k1}, T{h * a114, &k4}, T{h * a115, &k5}, T{h * a116, &k6},
+             T{h * a117, &k7}, T{h * a118, &k8}, T{h * a119, &k9}, T{h * a1110, &k10}}}));
+    const Vector k12 = rate(stageInput<9, Vector>(
+        z,
+        {{T{h * a121, &k1}, T{h * a124, &k4}, T{h * a125, &k5}, T{h * a126, &k6}, T{h * a127, &k7},
+          T{h * a128, &k8}, T{h * a129, &k9}, T{h * a1210, &k10}, T{h * a1211, &k11}}}));
+    Stages<Vector> stages{{k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12}, {}, {}, {}};
+    Vector& slope = stages.slope;
+    for (int i = 0; i < Vector::RowsAtCompileTime; ++i) {
       slope[i] = b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] +
                  b11 * k11[i] + b12 * k12[i];
     }
+    stages.end = z + h * slope;
+    stages.rate_at_end = rate(stages.end);
+    return stages;
+  }
+
+  // The step from z given its stages: its end, the rate there and its error.
+  Step finishStep(const State& z, const Stages<State>& stages, double h) {
+    using namespace dp853;
+    const std::array<State, kStages>& k = stages.k;
+    const State& k1 = k[0];
+    const State &k6 = k[5], &k7 = k[6], &k8 = k[7], &k9 = k[8], &k10 = k[9], &k11 = k[10],
+                &k12 = k[11];
     Step step;
-    step.z = z + h * slope;
-    step.rate_at_end = rate(step.z);
+    step.z = stages.end;
+    step.rate_at_end = stages.rate_at_end;
     // Combined estimate: |h| e5^2 / sqrt(n (e5^2 + w e3^2)), the norms scaled by the tolerances.
     // Only the error across the path counts: an error along it (of P and of the rest in the
     // proportions dz/dP at the step's end) is an error of the parameter tau, which the change of
@@ -1040,7 +1099,7 @@ class ExactImpact {
     // along the path, not off it. So the estimates are taken at equal P. Not where a slip turned
     // by more than a right angle within the step (it passed by zero): there the end's direction
     // does not stand for the step, and the whole estimate counts.
-    State third = slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12;
+    State third = stages.slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12;
     State fifth =
         er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 + er11 * k11 + er12 * k12;
     const std::array<Eigen::Vector2d, 2> slips_before = slips(z), slips_after = slips(step.z);
@@ -1080,8 +1139,8 @@ class ExactImpact {
         const double speed = u[other].norm();
         other_factor = speed / (speed + regularizing_slip_);
       }
-      rate = std::max(rate,
-                      direction_rate_scale_[k] * other_factor / (u[k].norm() + factorSlip(k)));
+      rate =
+          std::max(rate, direction_rate_scale_[k] * other_factor / (u[k].norm() + factorSlip(k)));
     }
     return rate;
   }
@@ -1144,7 +1203,7 @@ class ExactImpact {
   double eventSlope(const Event& event,
                     const State& r) const {  // d/dtau from the rate there; 0: none
     if (!event.phase_end) return 0;
-    return compressing_ ? -(c_ * r[kP] - s_ * r[kAy] + r[kBy]) / M_ : r[kWork];
+    return compressing_ ? -(c_ * r[kP] - s_ * r[kAy] + r[kBy]) * inverse_mass_ : r[kWork];
   }
   double eventTolerance(const Event& event) const {
     // The held law may end anywhere its error is of the order of its limit: located loosely.
@@ -1314,9 +1373,8 @@ class ExactImpact {
       const State k3 = rate(y + (0.75 * s) * k2);
       const State next = y + s * ((2.0 / 9) * k + (1.0 / 3) * k2 + (4.0 / 9) * k3);
       const State k4 = rate(next);
-      const State error =
-          s * ((2.0 / 9 - 7.0 / 24) * k + (1.0 / 3 - 0.25) * k2 + (4.0 / 9 - 1.0 / 3) * k3 -
-               0.125 * k4);
+      const State error = s * ((2.0 / 9 - 7.0 / 24) * k + (1.0 / 3 - 0.25) * k2 +
+                               (4.0 / 9 - 1.0 / 3) * k3 - 0.125 * k4);
       if (!(error.cwiseQuotient(error_scale_).cwiseAbs().maxCoeff() <= kLandingErrorFraction))
         return false;
       y = next;
@@ -1465,8 +1523,8 @@ class ExactImpact {
   // du/dtau of both contacts under the rate dz/dtau.
   std::array<Eigen::Vector2d, 2> slipChanges(const State& r) const {
     const Eigen::Vector4d response = contactResponse(r[kAx], r[kAy], r[kBx], r[kBy]);
-    return {Eigen::Vector2d(-response[0], -(response[1] - s_ * c_ * r[kP])) / M_,
-            Eigen::Vector2d(-response[2], -(response[3] + c_ * r[kP])) / M_};
+    return {Eigen::Vector2d(-response[0], -(response[1] - s_ * c_ * r[kP])) * inverse_mass_,
+            Eigen::Vector2d(-response[2], -(response[3] + c_ * r[kP])) * inverse_mass_};
   }
 
   // The step (tau) that takes approaching contact k's slip to where its zero is located, at the
@@ -1485,8 +1543,8 @@ class ExactImpact {
   // from it (kRecedingSlipMultiple), from the rate dz/dtau at z. When that changes, tau changes
   // meaning: the rate is taken again and the next step h rescaled to cover the same impulse.
   // Returns whether it changed.
-  bool updateSlipsRunInP(const State& z, const std::array<Eigen::Vector2d, 2>& u,
-                         State* rate_here, double* h) {
+  bool updateSlipsRunInP(const State& z, const std::array<Eigen::Vector2d, 2>& u, State* rate_here,
+                         double* h) {
     const State& r = *rate_here;
     const std::array<Eigen::Vector2d, 2> change = slipChanges(r);  // du/dtau
     bool changed = false;
@@ -1598,6 +1656,10 @@ class ExactImpact {
   // Entries of the contact matrix M G: [[7/2, 0, cx, 0], [0, s^2 + 5/2, 0, cy], [cx, 0, 7/2, 0],
   // [0, cy, 0, 7/2]] with cx = 1 - 5s/2, cy = 5/2 - s.
   double coupling_x_ = 0, coupling_y_ = 0, diagonal_y_ = 0;
+  // The same entries divided by M, and s c / M and c / M (bothSlidingRate).
+  struct ScaledContactMatrix {
+    double diagonal_x = 0, diagonal_y = 0, coupling_x = 0, coupling_y = 0, sc = 0, c = 0;
+  } scaled_;
   // 7/2 mu / M per contact (1 / (N s)): how fast its own friction turns a slip of unit size.
   std::array<double, 2> direction_rate_scale_{};
   State error_scale_;
@@ -1721,8 +1783,7 @@ CushionImpactResult ExactImpact::run() {
     double length = std::numeric_limits<double>::infinity();
     double shift = 0;
     const bool aim_landed =
-        aimed && step.error <= 1 &&
-        (crossed.empty() || (crossed.size() == 1 && crossed[0] == 0)) &&
+        aimed && step.error <= 1 && (crossed.empty() || (crossed.size() == 1 && crossed[0] == 0)) &&
         landOnPhaseEnd(step, h, &shift, &landed) && !crossedOther(events, landed.z);
     if (aim_landed) {
       first = 0;
