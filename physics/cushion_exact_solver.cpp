@@ -62,8 +62,8 @@ enum : int { kP = 0, kAx = 1, kAy = 2, kBx = 3, kBy = 4, kWork = 5, kStateSize =
 // While both contacts slide the Runge-Kutta stages also carry the slips (u_Ix, u_Iy, u_Cx, u_Cy;
 // m/s), which are affine in the state: summed with the stages, they reach each stage without the
 // contact matrix (see bothSlidingRate).
-using Extended = Eigen::Matrix<double, 10, 1>;
-enum : int { kUIx = 6, kUIy = 7, kUCx = 8, kUCy = 9 };
+enum : int { kUIx = kStateSize, kUIy, kUCx, kUCy, kExtendedSize };
+using Extended = Eigen::Matrix<double, kExtendedSize, 1>;
 
 // s0 of the change of variable, as a fraction of the velocity scale: below it a slipping contact's
 // own slip sets the pace (its direction turns over impulses of about M |u| / mu). A held contact
@@ -898,7 +898,7 @@ class ExactImpact {
     const double cloth = mu_[1] * (s_ * speed_I + c_ * mu_[0] * uIy);
     const double sliding = speed_I * speed_C;
     const double ax = nose * uIx, ay = nose * uIy, bx = cloth * uCx, by = cloth * uCy;
-    const ScaledContactMatrix& g = scaled_;
+    const ScaledContactMatrix& m = scaled_;
     Extended r;
     r[kP] = sliding * inverse;
     r[kAx] = ax * inverse;
@@ -906,14 +906,15 @@ class ExactImpact {
     r[kBx] = bx * inverse;
     r[kBy] = by * inverse;
     r[kWork] = (sliding * (c_ * vy)) * inverse;
-    r[kUIx] = -(g.diagonal_x * ax + g.coupling_x * bx) * inverse;
-    r[kUIy] = (g.sc * sliding - (g.diagonal_y * ay + g.coupling_y * by)) * inverse;
-    r[kUCx] = -(g.coupling_x * ax + g.diagonal_x * bx) * inverse;
-    r[kUCy] = -(g.c * sliding + (g.coupling_y * ay + g.diagonal_x * by)) * inverse;
+    r[kUIx] = -(m.diagonal_x * ax + m.coupling_x * bx) * inverse;
+    r[kUIy] = (m.sin_cos * sliding - (m.diagonal_y * ay + m.coupling_y * by)) * inverse;
+    r[kUCx] = -(m.coupling_x * ax + m.diagonal_x * bx) * inverse;
+    r[kUCy] = -(m.cos * sliding + (m.coupling_y * ay + m.diagonal_x * by)) * inverse;
     return r;
   }
 
-  // z with its slips appended, and a rate with the slips' rates.
+  // z with its slips appended, and a rate with the slips' rates (slipChanges, from the contact
+  // matrix scaled as in bothSlidingRate).
   Extended withSlips(const State& z) const {
     const std::array<Eigen::Vector2d, 2> u = slips(z);
     Extended y;
@@ -921,12 +922,12 @@ class ExactImpact {
     return y;
   }
   Extended withSlipRates(const State& r) const {
-    const ScaledContactMatrix& g = scaled_;
+    const ScaledContactMatrix& m = scaled_;
     Extended y;
-    y << r, -(g.diagonal_x * r[kAx] + g.coupling_x * r[kBx]),
-        g.sc * r[kP] - (g.diagonal_y * r[kAy] + g.coupling_y * r[kBy]),
-        -(g.coupling_x * r[kAx] + g.diagonal_x * r[kBx]),
-        -(g.c * r[kP] + (g.coupling_y * r[kAy] + g.diagonal_x * r[kBy]));
+    y << r, -(m.diagonal_x * r[kAx] + m.coupling_x * r[kBx]),
+        m.sin_cos * r[kP] - (m.diagonal_y * r[kAy] + m.coupling_y * r[kBy]),
+        -(m.coupling_x * r[kAx] + m.diagonal_x * r[kBx]),
+        -(m.cos * r[kP] + (m.coupling_y * r[kAy] + m.diagonal_x * r[kBy]));
     return y;
   }
 
@@ -1656,9 +1657,10 @@ class ExactImpact {
   // Entries of the contact matrix M G: [[7/2, 0, cx, 0], [0, s^2 + 5/2, 0, cy], [cx, 0, 7/2, 0],
   // [0, cy, 0, 7/2]] with cx = 1 - 5s/2, cy = 5/2 - s.
   double coupling_x_ = 0, coupling_y_ = 0, diagonal_y_ = 0;
-  // The same entries divided by M, and s c / M and c / M (bothSlidingRate).
+  // The same entries divided by M, and s c / M and c / M, all in 1/kg (bothSlidingRate and
+  // withSlipRates).
   struct ScaledContactMatrix {
-    double diagonal_x = 0, diagonal_y = 0, coupling_x = 0, coupling_y = 0, sc = 0, c = 0;
+    double diagonal_x = 0, diagonal_y = 0, coupling_x = 0, coupling_y = 0, sin_cos = 0, cos = 0;
   } scaled_;
   // 7/2 mu / M per contact (1 / (N s)): how fast its own friction turns a slip of unit size.
   std::array<double, 2> direction_rate_scale_{};
