@@ -898,7 +898,7 @@ class ExactImpact {
     const double cloth = mu_[1] * (s_ * speed_I + c_ * mu_[0] * uIy);
     const double sliding = speed_I * speed_C;
     const double ax = nose * uIx, ay = nose * uIy, bx = cloth * uCx, by = cloth * uCy;
-    const ScaledContactMatrix& m = scaled_;
+    const Eigen::Vector4d slip_rates = slipRatesOf(sliding, ax, ay, bx, by);
     Extended r;
     r[kP] = sliding * inverse;
     r[kAx] = ax * inverse;
@@ -906,15 +906,21 @@ class ExactImpact {
     r[kBx] = bx * inverse;
     r[kBy] = by * inverse;
     r[kWork] = (sliding * (c_ * vy)) * inverse;
-    r[kUIx] = -(m.diagonal_x * ax + m.coupling_x * bx) * inverse;
-    r[kUIy] = (m.sin_cos * sliding - (m.diagonal_y * ay + m.coupling_y * by)) * inverse;
-    r[kUCx] = -(m.coupling_x * ax + m.diagonal_x * bx) * inverse;
-    r[kUCy] = -(m.cos * sliding + (m.coupling_y * ay + m.diagonal_x * by)) * inverse;
+    r.tail<4>() = slip_rates * inverse;
     return r;
   }
 
-  // z with its slips appended, and a rate with the slips' rates (slipChanges, from the contact
-  // matrix scaled as in bothSlidingRate).
+  // du/dtau = (du_I, du_C) under the rate dz/dtau = (p, ax, ay, bx, by, .) (slipChanges, from the
+  // contact matrix scaled as the stages' rate uses it).
+  Eigen::Vector4d slipRatesOf(double p, double ax, double ay, double bx, double by) const {
+    const ScaledContactMatrix& m = scaled_;
+    return {-(m.diagonal_x * ax + m.coupling_x * bx),
+            m.sin_cos * p - (m.diagonal_y * ay + m.coupling_y * by),
+            -(m.coupling_x * ax + m.diagonal_x * bx),
+            -(m.cos * p + (m.coupling_y * ay + m.diagonal_x * by))};
+  }
+
+  // z with its slips appended, and a rate with the slips' rates.
   Extended withSlips(const State& z) const {
     const std::array<Eigen::Vector2d, 2> u = slips(z);
     Extended y;
@@ -922,12 +928,8 @@ class ExactImpact {
     return y;
   }
   Extended withSlipRates(const State& r) const {
-    const ScaledContactMatrix& m = scaled_;
     Extended y;
-    y << r, -(m.diagonal_x * r[kAx] + m.coupling_x * r[kBx]),
-        m.sin_cos * r[kP] - (m.diagonal_y * r[kAy] + m.coupling_y * r[kBy]),
-        -(m.coupling_x * r[kAx] + m.diagonal_x * r[kBx]),
-        -(m.cos * r[kP] + (m.coupling_y * r[kAy] + m.diagonal_x * r[kBy]));
+    y << r, slipRatesOf(r[kP], r[kAx], r[kAy], r[kBx], r[kBy]);
     return y;
   }
 
@@ -1657,8 +1659,7 @@ class ExactImpact {
   // Entries of the contact matrix M G: [[7/2, 0, cx, 0], [0, s^2 + 5/2, 0, cy], [cx, 0, 7/2, 0],
   // [0, cy, 0, 7/2]] with cx = 1 - 5s/2, cy = 5/2 - s.
   double coupling_x_ = 0, coupling_y_ = 0, diagonal_y_ = 0;
-  // The same entries divided by M, and s c / M and c / M, all in 1/kg (bothSlidingRate and
-  // withSlipRates).
+  // The same entries divided by M, and s c / M and c / M, all in 1/kg (slipRatesOf).
   struct ScaledContactMatrix {
     double diagonal_x = 0, diagonal_y = 0, coupling_x = 0, coupling_y = 0, sin_cos = 0, cos = 0;
   } scaled_;
