@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -205,6 +207,16 @@ constexpr double kSmallSlipGrowthPerStep = 0.7;
 // 2.75 was the one with no impact above 1e-9 V0 on any set (docs/cushion.md, "Steps capped by a
 // slip's turning").
 constexpr double kSlipDirectionTimeConstants = 2.75;
+// A step (in tau) may span at most this many of a slipping slip's turning scales |u| / |du/dtau|
+// at its start (turningScaleStep): about the distance to the solution's nearest complex
+// singularity, where the slip would vanish, and beyond it the embedded estimate is no guide. A
+// nose slip passing 7e-4 m/s from zero (a quarter of s0) on a grippy cloth was crossed in one step
+// of 1.2 turning scales, grown threefold after a step whose estimate read near zero; its estimate
+// read 900 times below its true error, and the impact ended 1.7e-9 V0 off. The caps 0.8 to 1.25
+// leave none of 72,000 grippy impacts above 5e-10 V0 (3 were, the largest 9.7e-10); 1.5 left 25,
+// 3 of them above 1e-9, and 0.5 costs 8 % more evaluations on the impacts of play
+// (docs/cushion.md, "Steps capped by a slip's turning").
+constexpr double kTurningScaleSteps = 1.0;
 // Step-size control of the embedded pair: safety factor and bounds on the change per step.
 constexpr double kStepSafety = 0.9;
 constexpr double kStepMinFactor = 1.0 / 3;
@@ -319,16 +331,37 @@ double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
   return p.x() * q.y() - p.y() * q.x();
 }
 
-// x^(1/8) as three square roots: a tenth of the cost of std::pow, called once or twice a step.
-static_assert(kErrorOrder == 8, "eighthRoot stands for the power 1 / kErrorOrder");
-double eighthRoot(double x) { return std::sqrt(std::sqrt(std::sqrt(x))); }
+// x^(-1/8) within 0.21 %, for the step controller (which needs no more: its safety factor is
+// 10 %). Three square roots and a division took about 60 cycles in the chain of dependent
+// operations that runs from a step's error to the next step's first stage, at every step; this
+// takes about 25. A double's bits read as an integer are about 2^52 (log2 x + 1023), so those of
+// x^(-1/8) are about (1 + 1/8) 1023 2^52 less an eighth of x's (within 3 %), and one Newton step
+// on y^-8 = x, y (9 - x y^8) / 8, leaves it within 0.41 % below (centred: 0.21 % either way).
+// Integer and IEEE operations only: the same bits on every machine. x is kept within
+// [1e-300, 1e300], where y^8 neither overflows nor underflows.
+static_assert(kErrorOrder == 8, "inverseEighthRoot stands for the power -1 / kErrorOrder");
+double inverseEighthRoot(double x) {
+  x = std::clamp(x, 1e-300, 1e300);
+  constexpr std::int64_t kOne = std::int64_t{1023} << 52;  // the bits of 1.0
+  constexpr std::int64_t kCentre = std::int64_t{7} << 45;  // balances the first guess's error
+  // 1/8 of the Newton step, times 1.00203: the step leaves the root up to 0.406 % low, never high,
+  // so this centres the result's error.
+  constexpr double kNewtonEighth = 0.125 * 1.00203;
+  std::int64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const std::int64_t guess_bits = kOne + (kOne >> 3) - (bits >> 3) - kCentre;
+  double y;
+  std::memcpy(&y, &guess_bits, sizeof y);
+  const double y2 = y * y, y4 = y2 * y2;
+  return y * (9 - x * (y4 * y4)) * kNewtonEighth;
+}
 
 double stepFactor(double error) {
   if (error == 0) return kStepMaxFactor;
   if (!(error > 0)) return kStepMinFactor;  // NaN: that step failed; try a shorter one
   // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
   // the share leaves that order (above the floor it is one lower, which the safety factor covers).
-  return std::clamp(kStepSafety / eighthRoot(error), kStepMinFactor, kStepMaxFactor);
+  return std::clamp(kStepSafety * inverseEighthRoot(error), kStepMinFactor, kStepMaxFactor);
 }
 
 // The root in (0, limit] of the cubic through value g0 > 0 and slope d0 < 0 at 0 and value gp and
@@ -437,6 +470,7 @@ class ExactImpact {
     impulse_scale_ = impulse_scale;
     for (int i = 0; i < kWork; ++i) error_scale_[i] = options.tolerance * impulse_scale;
     error_scale_[kWork] = options.tolerance * impulse_scale * velocity_scale_;
+    inverse_error_scale_ = error_scale_.cwiseInverse();
     vanished_slip_ = kVanishedSlipFraction * options.tolerance * velocity_scale_;
     regularizing_slip_ = kRegularizingSlipFraction * velocity_scale_;
     creep_error_limit_ = kCreepErrorFraction * options.tolerance * velocity_scale_;
@@ -640,6 +674,11 @@ class ExactImpact {
     Eigen::Vector2d r0;
     Eigen::Matrix2d W;
     if (!affineSlipRate(k, laws, &r0, &W)) return AffineNewton::NotAffine;
+    return affineNewton(r0, W, guess, result) ? AffineNewton::Found : AffineNewton::NotFound;
+  }
+  // The Newton iterations of creepDirectionAffineNewton on r(d) = r0 + W d from `guess`.
+  static bool affineNewton(const Eigen::Vector2d& r0, const Eigen::Matrix2d& W,
+                           const Eigen::Vector2d& guess, Eigen::Vector2d* result) {
     Eigen::Vector2d d = guess.normalized();
     for (int it = 0; it < kMaxCreepIterations; ++it) {
       const Eigen::Vector2d r = r0 + W * d, across(-d.y(), d.x());
@@ -659,10 +698,10 @@ class ExactImpact {
         const bool on_edge = rate.norm() <= kAffineCheckRelative * scale;
         if (!(rate.dot(d) > 0) && !on_edge) break;
         *result = d;
-        return AffineNewton::Found;
+        return true;
       }
     }
-    return AffineNewton::NotFound;
+    return false;
   }
 
   // phi* in closed form when the slip rate is affine in the friction direction d, r(d) = r0 + W d
@@ -773,13 +812,28 @@ class ExactImpact {
     laws.stick[k] = false;
     laws.direction[k] = phi;
     const double growth = slipRate(k, frictionFor(laws)).dot(phi);
-    const double cos_probe = std::cos(kLagProbeAngle_rad), sin_probe = std::sin(kLagProbeAngle_rad);
-    const Eigen::Vector2d turned(phi.x() * cos_probe - phi.y() * sin_probe,
-                                 phi.x() * sin_probe + phi.y() * cos_probe);
+    const Eigen::Vector2d turned = probeTurned(phi);
     laws.direction[k] = turned;
     const double restoring = -cross(turned, slipRate(k, frictionFor(laws))) / kLagProbeAngle_rad;
+    return lagShareOf(growth, restoring, contacts_[k].creep_growth_order);
+  }
+  // phi turned by kLagProbeAngle_rad.
+  static Eigen::Vector2d probeTurned(const Eigen::Vector2d& phi) {
+    const double cos_probe = std::cos(kLagProbeAngle_rad), sin_probe = std::sin(kLagProbeAngle_rad);
+    return {phi.x() * cos_probe - phi.y() * sin_probe, phi.x() * sin_probe + phi.y() * cos_probe};
+  }
+  // The share from the slip's growth along phi* and the restoring rate of its direction.
+  static double lagShareOf(double growth, double restoring, double growth_order) {
     if (!(growth > 0) || !(restoring > 0)) return 1;
-    return restoring / (growth / contacts_[k].creep_growth_order + restoring);
+    return restoring / (growth / growth_order + restoring);
+  }
+  // lagShare for the nose, whose slip rate is affine in its friction direction, r(d) = r0 + W d.
+  static double affineLagShare(const Eigen::Vector2d& r0, const Eigen::Matrix2d& W,
+                               const Eigen::Vector2d& phi, double growth_order) {
+    const double growth = (r0 + W * phi).dot(phi);
+    const Eigen::Vector2d turned = probeTurned(phi);
+    const double restoring = -cross(turned, r0 + W * turned) / kLagProbeAngle_rad;
+    return lagShareOf(growth, restoring, growth_order);
   }
 
   // The direction of a slip that grows from zero while phi* turns: the slip is the sum of what
@@ -858,9 +912,24 @@ class ExactImpact {
     return slipping(0) && slipping(1) && !contacts_[0].approaching && !contacts_[1].approaching;
   }
 
+  // Whether the cloth contact is held while the nose slides with friction along its slip: the
+  // common held case (a rolling ball's cloth contact), with its own rate (clothHeldRate).
+  bool clothHeldWhileNoseSlides() const {
+    return held(1) && slipping(0) && !contacts_[0].approaching;
+  }
+
   // dz/dtau.
   State rate(const State& z) {
     if (bothSliding()) return bothSlidingRate(z);
+    if (clothHeldWhileNoseSlides())
+      return clothHeldRate(withSlips(z), normalVelocity(z)).head<kStateSize>();
+    if (noseHeldWhileClothSlides())
+      return noseHeldRate(withSlips(z), normalVelocity(z)).head<kStateSize>();
+    return generalRate(z);
+  }
+
+  // rate() under the general laws (lawsAt).
+  State generalRate(const State& z) {
     ++evaluations_;
     if (!held(0) && !held(1)) return slidingRate(z);
     std::array<double, 2> speed;
@@ -873,6 +942,109 @@ class ExactImpact {
     State r;
     r << 1, f.a.x(), f.a.y(), f.b.x(), f.b.y(), c_ * normalVelocity(z);
     return sigma * r;
+  }
+
+  // Whether the nose contact is held while the cloth slides with friction along its slip.
+  bool noseHeldWhileClothSlides() const {
+    return held(0) && slipping(1) && !contacts_[1].approaching;
+  }
+
+  // rate() while the nose is held and the cloth slides (noseHeldWhileClothSlides), at the slips
+  // held in y: the general laws written out for this case. The nose sticks while its stick law's
+  // friction lies inside its cone (compared squared), and otherwise slides along phi*, found by
+  // Newton's method on its slip rate, which is affine in its direction d: r(d) = r0 + W d with,
+  // per unit P and the cloth's friction mu_s (s + c mu_w d_y) along d_C,
+  //   r0 = -(1/M) ((1 - 5s/2) mu_s s d_Cx, (5/2 - s) mu_s s d_Cy - s c),
+  //   W = -(mu_w/M) [7/2, (1 - 5s/2) mu_s c d_Cx; 0, s^2 + 5/2 + (5/2 - s) mu_s c d_Cy];
+  // lag-corrected as lagShare says. The general laws serve an exactly zero cloth slip and a phi*
+  // that Newton does not find.
+  [[gnu::always_inline]] Extended noseHeldRate(const Extended& y, double vy) {
+    const double uCx = y[kUCx], uCy = y[kUCy];
+    const double speed_C = std::sqrt(uCx * uCx + uCy * uCy);
+    if (!(speed_C > 0)) return withSlipRates(generalRate(y.head<kStateSize>()));
+    const double to_direction = 1 / speed_C;
+    const double inverse = 1 / (speed_C + factorSlip(1));  // sigma = |u_C| x inverse
+    const double dCx = uCx * to_direction, dCy = uCy * to_direction;
+    // The nose's stick law under the sliding cloth (frictionFor).
+    const double gx = mu_[1] * dCx, gy = mu_[1] * dCy;
+    double ay = (s_ * c_ - coupling_y_ * s_ * gy) / (diagonal_y_ + coupling_y_ * c_ * gy);
+    double ax = -coupling_x_ * (s_ + c_ * ay) * gx * (1 / 3.5);
+    const double hold_limit = mu_[0] * (1 - kConeSlackRelative);
+    if (!(ax * ax + ay * ay <= hold_limit * hold_limit)) {
+      const double nose = mu_[0] * inverse_mass_, cloth = mu_[1] * inverse_mass_;
+      const Eigen::Vector2d r0(-coupling_x_ * cloth * s_ * dCx,
+                               -(coupling_y_ * cloth * s_ * dCy - s_ * c_ * inverse_mass_));
+      Eigen::Matrix2d W;
+      W << -3.5 * nose, -coupling_x_ * cloth * c_ * mu_[0] * dCx, 0,
+          -(diagonal_y_ * nose + coupling_y_ * cloth * c_ * mu_[0] * dCy);
+      Eigen::Vector2d phi;
+      if (!affineNewton(r0, W, contacts_[0].creep, &phi))
+        return withSlipRates(generalRate(y.head<kStateSize>()));
+      if (lagCorrected(0)) {
+        phi = lagCorrected(contacts_[0].creep_origin, phi,
+                           affineLagShare(r0, W, phi, contacts_[0].creep_growth_order));
+      }
+      ax = mu_[0] * phi.x();
+      ay = mu_[0] * phi.y();
+    }
+    ++evaluations_;
+    const double limit = mu_[1] * (s_ + c_ * ay);
+    return scaledRate(speed_C * inverse, ax, ay, limit * dCx, limit * dCy, vy);
+  }
+
+  // The rate sigma (1, a_x, a_y, b_x, b_y, c v_y) with the slips' rates (slipRatesOf).
+  [[gnu::always_inline]] Extended scaledRate(double sigma, double ax, double ay, double bx,
+                                             double by, double vy) const {
+    Extended r;
+    r[kP] = sigma;
+    r[kAx] = ax * sigma;
+    r[kAy] = ay * sigma;
+    r[kBx] = bx * sigma;
+    r[kBy] = by * sigma;
+    r[kWork] = (c_ * vy) * sigma;
+    r.tail<4>() = slipRatesOf(r[kP], r[kAx], r[kAy], r[kBx], r[kBy]);
+    return r;
+  }
+
+  // rate() while the cloth is held and the nose slides (clothHeldWhileNoseSlides), at the slips
+  // held in y: the laws of clothHeldLaws written out, so that the stages need neither the contact
+  // matrix nor the general laws. The cloth sticks while its drive r0 lies inside its cone (|r0| <=
+  // k, compared squared) and otherwise slides along r0, or, lag-corrected, along
+  // (|r0| - k) / order x origin + r0, the direction of lagCorrected's blend. The general laws
+  // serve an exactly zero nose slip and a drive on the cone's edge.
+  [[gnu::always_inline]] Extended clothHeldRate(const Extended& y, double vy) {
+    const double uIx = y[kUIx], uIy = y[kUIy];
+    const double speed_I = std::sqrt(uIx * uIx + uIy * uIy);
+    if (!(speed_I > 0)) return withSlipRates(generalRate(y.head<kStateSize>()));
+    const double to_direction = 1 / speed_I;
+    const double inverse = 1 / (speed_I + factorSlip(0));  // sigma = |u_I| x inverse
+    const double ax = mu_[0] * (uIx * to_direction), ay = mu_[0] * (uIy * to_direction);
+    const double own = 3.5 * mu_[1] * (s_ + c_ * ay) * inverse_mass_;  // k
+    if (!(own > 0)) return withSlipRates(generalRate(y.head<kStateSize>()));
+    const double r0x = -coupling_x_ * ax * inverse_mass_;
+    const double r0y = -(c_ + coupling_y_ * ay) * inverse_mass_;
+    const double drive_squared = r0x * r0x + r0y * r0y;
+    const double hold_limit = own * (1 - kConeSlackRelative);
+    double bx, by;
+    if (drive_squared <= hold_limit * hold_limit) {  // the cone holds it: the stick law
+      bx = -coupling_x_ * ax * (1 / 3.5);
+      by = -(c_ + coupling_y_ * ay) * (1 / 3.5);
+    } else {
+      const double drive = std::sqrt(drive_squared);
+      if (!(drive > own)) return withSlipRates(generalRate(y.head<kStateSize>()));
+      double dx = r0x, dy = r0y;
+      const ContactState& cloth = contacts_[1];
+      if (cloth.creep_from_rest) {
+        const double lag = (drive - own) / cloth.creep_growth_order;
+        dx += lag * cloth.creep_origin.x();
+        dy += lag * cloth.creep_origin.y();
+      }
+      const double limit = mu_[1] * (s_ + c_ * ay) / std::sqrt(dx * dx + dy * dy);
+      bx = limit * dx;
+      by = limit * dy;
+    }
+    ++evaluations_;
+    return scaledRate(speed_I * inverse, ax, ay, bx, by, vy);
   }
 
   // rate() while both contacts slide (bothSliding), with the speeds cancelled out of it: with d =
@@ -888,7 +1060,7 @@ class ExactImpact {
   // rates: each rate is its numerator times the one inverse, so that the slips' rates are ready as
   // soon as the rest and the stages need no contact matrix between them (the stages run one after
   // another, each on the one before, and the dependent operations between them set the cost).
-  Extended bothSlidingRate(const Extended& y, double vy) {
+  [[gnu::always_inline]] Extended bothSlidingRate(const Extended& y, double vy) {
     ++evaluations_;
     const double uIx = y[kUIx], uIy = y[kUIy], uCx = y[kUCx], uCy = y[kUCy];
     const double speed_I = std::sqrt(uIx * uIx + uIy * uIy);
@@ -980,16 +1152,9 @@ class ExactImpact {
         sigma_denominator *= speed + regularizing_slip_;
       }
     }
-    const double sigma = sigma_numerator / sigma_denominator;
     const double vy = vy0_ - (c_ * P - s_ * ay + by) * inverse_mass_;
-    State r;
-    r[kP] = sigma;
-    r[kAx] = sigma * fax;
-    r[kAy] = sigma * fay;
-    r[kBx] = sigma * fbx;
-    r[kBy] = sigma * fby;
-    r[kWork] = sigma * c_ * vy;
-    return r;
+    return scaledRate(sigma_numerator / sigma_denominator, fax, fay, fbx, fby, vy)
+        .head<kStateSize>();
   }
 
   // Whether a slipping contact's slip turned by more than a right angle from `before` to `after`
@@ -1002,21 +1167,37 @@ class ExactImpact {
     return false;
   }
 
-  // One Dormand-Prince step. While both contacts slide its stages carry the slips (Extended) into
-  // bothSlidingRate, which GCC inlines into them.
+  // One Dormand-Prince step. While both contacts slide, or one is held while the other slides, its
+  // stages carry the slips (Extended) into that case's own rate, which GCC inlines into them.
   Step rungeKuttaStep(const State& z, const State& k1, double h) {
-    if (bothSliding()) {
-      const Stages<Extended> extended =
-          dp853Stages(withSlips(z), withSlipRates(k1), h,
-                      [this](const Extended& y) { return bothSlidingRate(y, normalVelocity(y)); });
-      Stages<State> stages;
-      for (int i = 0; i < kStages; ++i) stages.k[i] = extended.k[i].head<kStateSize>();
-      stages.slope = extended.slope.head<kStateSize>();
-      stages.end = extended.end.head<kStateSize>();
-      stages.rate_at_end = extended.rate_at_end.head<kStateSize>();
-      return finishStep(z, stages, h);
-    }
+    if (bothSliding()) return extendedStep(z, k1, h, BothSlidingStage{this});
+    if (clothHeldWhileNoseSlides()) return extendedStep(z, k1, h, ClothHeldStage{this});
+    if (noseHeldWhileClothSlides()) return extendedStep(z, k1, h, NoseHeldStage{this});
     return finishStep(z, dp853Stages(z, k1, h, [this](const State& y) { return rate(y); }), h);
+  }
+  // The stages' rates of those three cases, inlined into them (as lambdas GCC stopped inlining them
+  // once there were two).
+  struct BothSlidingStage {
+    ExactImpact* solver;
+    [[gnu::always_inline]] Extended operator()(const Extended& y) const {
+      return solver->bothSlidingRate(y, solver->normalVelocity(y));
+    }
+  };
+  struct ClothHeldStage {
+    ExactImpact* solver;
+    [[gnu::always_inline]] Extended operator()(const Extended& y) const {
+      return solver->clothHeldRate(y, solver->normalVelocity(y));
+    }
+  };
+  struct NoseHeldStage {
+    ExactImpact* solver;
+    [[gnu::always_inline]] Extended operator()(const Extended& y) const {
+      return solver->noseHeldRate(y, solver->normalVelocity(y));
+    }
+  };
+  template <typename Rate>
+  Step extendedStep(const State& z, const State& k1, double h, const Rate& rate) {
+    return finishStep(z, dp853Stages(withSlips(z), withSlipRates(k1), h, rate), h);
   }
 
   // z + (h c_1 k_1 + ... + h c_n k_n), element by element, the coefficients given times h. The
@@ -1086,15 +1267,28 @@ class ExactImpact {
   }
 
   // The step from z given its stages: its end, the rate there and its error.
-  Step finishStep(const State& z, const Stages<State>& stages, double h) {
+  // (Of either vector type: only the state's part of each stage is read, none copied.)
+  template <typename Vector>
+  Step finishStep(const State& z, const Stages<Vector>& stages, double h) {
     using namespace dp853;
-    const std::array<State, kStages>& k = stages.k;
-    const State& k1 = k[0];
-    const State &k6 = k[5], &k7 = k[6], &k8 = k[7], &k9 = k[8], &k10 = k[9], &k11 = k[10],
-                &k12 = k[11];
+    const std::array<Vector, kStages>& k = stages.k;
+    const Vector& k1 = k[0];
+    const Vector &k6 = k[5], &k7 = k[6], &k8 = k[7], &k9 = k[8], &k10 = k[9], &k11 = k[10],
+                 &k12 = k[11];
     Step step;
-    step.z = stages.end;
-    step.rate_at_end = stages.rate_at_end;
+    step.z = stages.end.template head<kStateSize>();
+    step.rate_at_end = stages.rate_at_end.template head<kStateSize>();
+    State third, fifth;
+    for (int i = 0; i < kStateSize; ++i) {
+      third[i] = stages.slope[i] - bhh1 * k1[i] - bhh2 * k9[i] - bhh3 * k12[i];
+      fifth[i] = er1 * k1[i] + er6 * k6[i] + er7 * k7[i] + er8 * k8[i] + er9 * k9[i] +
+                 er10 * k10[i] + er11 * k11[i] + er12 * k12[i];
+    }
+    return finishStep(z, step, third, fifth, h);
+  }
+  // The step's error from the third- and fifth-order estimates' differences.
+  Step finishStep(const State& z, Step step, State third, State fifth, double h) {
+    using dp853::kThirdOrderWeight;
     // Combined estimate: |h| e5^2 / sqrt(n (e5^2 + w e3^2)), the norms scaled by the tolerances.
     // Only the error across the path counts: an error along it (of P and of the rest in the
     // proportions dz/dP at the step's end) is an error of the parameter tau, which the change of
@@ -1102,27 +1296,42 @@ class ExactImpact {
     // along the path, not off it. So the estimates are taken at equal P. Not where a slip turned
     // by more than a right angle within the step (it passed by zero): there the end's direction
     // does not stand for the step, and the whole estimate counts.
-    State third = stages.slope - bhh1 * k1 - bhh2 * k9 - bhh3 * k12;
-    State fifth =
-        er1 * k1 + er6 * k6 + er7 * k7 + er8 * k8 + er9 * k9 + er10 * k10 + er11 * k11 + er12 * k12;
+    // (Two divisions and products with the scales' reciprocals: this runs between a step's last
+    // rate and the next step's first stage, where each division's latency, and eighteen divisions'
+    // turns at the divider, were waited for.)
     const std::array<Eigen::Vector2d, 2> slips_before = slips(z), slips_after = slips(step.z);
     if (!slipReversed(slips_before, slips_after) && step.rate_at_end[kP] > 0) {
-      const State tangent = step.rate_at_end / step.rate_at_end[kP];
-      third -= third[kP] * tangent;
-      fifth -= fifth[kP] * tangent;
+      const double third_along = third[kP] / step.rate_at_end[kP];
+      const double fifth_along = fifth[kP] / step.rate_at_end[kP];
+      third -= third_along * step.rate_at_end;
+      fifth -= fifth_along * step.rate_at_end;
+      third[kP] = fifth[kP] = 0;
     }
-    third = third.cwiseQuotient(error_scale_);
-    fifth = fifth.cwiseQuotient(error_scale_);
+    third = third.cwiseProduct(inverse_error_scale_);
+    fifth = fifth.cwiseProduct(inverse_error_scale_);
     const double fifth_squared = fifth.squaredNorm(), third_squared = third.squaredNorm();
     double denominator = fifth_squared + kThirdOrderWeight * third_squared;
     if (!(denominator > 0)) denominator = 1;
-    const double error =
-        std::abs(h) * fifth_squared / std::sqrt(State::RowsAtCompileTime * denominator);
     // Error per unit step: a step may add error in proportion to the share of the impact's impulse
     // it covers, so the errors of many steps add up to about the tolerance, not to their number
     // times it.
     const double share = std::max(std::abs(step.z[kP] - z[kP]) / impulse_scale_, kMinErrorShare);
-    step.error = std::max(error / share, smallSlipGrowthError(slips_before, slips_after));
+    const double error_per_share =
+        std::abs(h) * fifth_squared / (std::sqrt(State::RowsAtCompileTime * denominator) * share);
+    step.error = std::max(error_per_share, smallSlipGrowthError(slips_before, slips_after));
+    return step;
+  }
+
+  // The longest step (tau) that spans kTurningScaleSteps of each slipping contact's turning scale
+  // |u| / |du/dtau| at rate k1 (an approaching slip falls along its line and is landed on instead).
+  double turningScaleStep(const std::array<Eigen::Vector2d, 2>& u, const State& k1) const {
+    const std::array<Eigen::Vector2d, 2> change = slipChanges(k1);
+    double step = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 2; ++k) {
+      if (!slipping(k) || contacts_[k].approaching) continue;
+      const double speed = change[k].norm();
+      if (speed > 0) step = std::min(step, kTurningScaleSteps * u[k].norm() / speed);
+    }
     return step;
   }
 
@@ -1666,6 +1875,7 @@ class ExactImpact {
   // 7/2 mu / M per contact (1 / (N s)): how fast its own friction turns a slip of unit size.
   std::array<double, 2> direction_rate_scale_{};
   State error_scale_;
+  State inverse_error_scale_;  // 1 / error_scale_, element by element
   std::array<ContactState, 2> contacts_;
   bool compressing_ = true;
   double work_target_ = 0;
@@ -1764,6 +1974,7 @@ CushionImpactResult ExactImpact::run() {
     }
     const double direction_rate = slipDirectionRate(u);
     if (direction_rate > 0) h = std::min(h, kSlipDirectionTimeConstants / direction_rate);
+    h = std::min(h, turningScaleStep(u, k1));
     // Aim at a phase end predicted within the step (events[0]), extrapolated from the last
     // accepted step: landing from there costs a few cheap steps instead of trial steps.
     const double phase_value = eventValue(events[0], z), phase_slope = eventSlope(events[0], k1);
@@ -1815,7 +2026,8 @@ CushionImpactResult ExactImpact::run() {
         // follows it too, instead of overshooting into a rejection every other step.
         double factor = stepFactor(step.error);
         if (previous_error_ > 0 && step.error > 0) {
-          const double trend = (h / previous_step_) * eighthRoot(previous_error_ / step.error);
+          const double trend = (h / previous_step_) / inverseEighthRoot(previous_error_) *
+                               inverseEighthRoot(step.error);
           factor = std::clamp(stepFactor(step.error) * trend, kStepMinFactor, kStepMaxFactor);
         }
         previous_step_ = h;

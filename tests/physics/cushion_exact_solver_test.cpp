@@ -386,6 +386,30 @@ TEST(CushionExactSolver, AStepSpansAFewTimeConstantsOfASmallSlipsDirection) {
   expectDefaultToleranceWithin(p, in, kSettlingDirectionError);
 }
 
+// Regression (a grippy impact of a random-parameter set, found when the step controller's eighth
+// root came to be estimated): a nose slip passing 7e-4 m/s from zero, a quarter of s0, was crossed
+// in one step of 1.2 of its turning scales |u| / |du/dtau|, grown threefold after a step whose
+// estimate read near zero. That step's estimate read 900 times below its true error: the impact
+// ended 1.7e-9 V0 off at the default tolerance (9.7e-10 with the eighth root taken exactly, 4.2e-10
+// at 3.5e-11), and about 1e-11 V0 at the tolerances around it. With steps capped at one turning
+// scale it is within 2.1e-11 V0 from 2e-11 to 5e-11.
+constexpr double kCloseSlipPassError = 1e-10;  // the 2.1e-11 it is, with room
+TEST(CushionExactSolver, ASlipPassingCloseByZeroIsNotCrossedInOneStep) {
+  CushionParams p;  // the paper's snooker cushion, nearly frictionless, on a grippy cloth
+  p.cloth_friction = 0.35380519221848233;
+  p.cushion_friction = 0.02686479312309218;
+  BallVelocity in;  // 1.32 m/s at 76 degrees, with topspin and sidespin
+  in.v = {0.32816679242026403, 1.277767598617098, 0};
+  in.w = {-47.996295160270279, 12.3268035970304, 19.107352400516053};
+  const double V = in.v.norm();
+  const BallVelocity converged = solveExact(p, in, kConvergedTolerance).after;
+  for (double tolerance : {2e-11, 2.5e-11, 3e-11, 3.5e-11, 4e-11, 5e-11}) {
+    SCOPED_TRACE(::testing::Message() << "tolerance " << tolerance);
+    const CushionImpactResult r = solveExact(p, in, tolerance);
+    EXPECT_LE(velocityDifference(r.after, converged, p.radius_m) / V, kCloseSlipPassError);
+  }
+}
+
 // Regression (docs/cushion.md, "Known: a stalled slip on a grippy cushion"): on a grippy snooker
 // cushion the nose slip falls along its line at a hundred-thousandth of its friction's scale, and
 // in tau the solver crawled until it ran out of steps at the default tolerance (and at 1e-11 to
