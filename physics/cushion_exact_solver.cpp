@@ -212,10 +212,11 @@ constexpr double kSlipDirectionTimeConstants = 2.75;
 // singularity, where the slip would vanish, and beyond it the embedded estimate is no guide. A
 // nose slip passing 7e-4 m/s from zero (a quarter of s0) on a grippy cloth was crossed in one step
 // of 1.2 turning scales, grown threefold after a step whose estimate read near zero; its estimate
-// read 900 times below its true error, and the impact ended 1.7e-9 V0 off. The caps 0.8 to 1.25
-// leave none of 72,000 grippy impacts above 5e-10 V0 (3 were, the largest 9.7e-10); 1.5 left 25,
-// 3 of them above 1e-9, and 0.5 costs 8 % more evaluations on the impacts of play
-// (docs/cushion.md, "Steps capped by a slip's turning").
+// read 900 times below its true error, and the impact ended 1.7e-9 V0 off. With this cap none of
+// 72,000 grippy impacts lies above 5e-10 V0 (5 did, the largest 9.7e-10), nor with caps of 0.8 to
+// 1.25 any of 18,000 of them; 1.5 left 25 of the 72,000, 3 of them above 1e-9, and 0.5 costs 8 %
+// more evaluations on the impacts of play (docs/cushion.md, "Steps capped at a slip's turning
+// scale").
 constexpr double kTurningScaleSteps = 1.0;
 // Step-size control of the embedded pair: safety factor and bounds on the change per step.
 constexpr double kStepSafety = 0.9;

@@ -18,9 +18,9 @@ struct ExactSolverOptions {
   // scales), per share of the impact's impulse (error per unit step). Accepted: [1e-14, 1e-6]. The
   // default keeps output velocities within 1e-9 V0 of the converged solution: over the 12000
   // seeded impacts of `baize bench cushion --impacts 8000` (wide and rolling sets) the largest
-  // error is 1.8e-10 V0 on the paper's snooker cushion and 5.0e-10 V0 on the 9 ft pool table's
+  // error is 1.9e-10 V0 on the paper's snooker cushion and 4.95e-10 V0 on the 9 ft pool table's
   // (tests and the bench check it on smaller sets); over the 16,180 impacts of 5000 random single
-  // shots (`baize bench cushion --from-shots 5000`) it is 4.4e-10 V0.
+  // shots (`baize bench cushion --from-shots 5000`) it is 3.3e-10 V0.
   double tolerance = 3e-11;
   // > 0: record result.trace with samples at least this dense in P (N s), plus every step and
   // event.
