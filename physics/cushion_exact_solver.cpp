@@ -44,11 +44,14 @@
 // enters its slip rate isotropically); a slip growing from rest while the other contact slides
 // follows a held law corrected for the lag of its direction behind phi*; a slip falling along its
 // own line runs in P with its friction along that line until it vanishes, instead of decaying
-// exponentially in tau; and a slip growing well above s0 runs in P too.
+// exponentially in tau; and a slip growing well above s0 runs in P too. The rates of the common
+// modes (both contacts sliding, or one held while the other slides) are written out and inlined
+// into the Runge-Kutta stages, which carry the slips alongside the state.
 //
 // The system in tau is integrated with the Dormand-Prince 8(5,3) pair, its error measured across
 // the path (an error of tau alone moves no state off it), its steps capped at a few time constants
-// of the fastest-turning slip direction (where the pair's estimate fails). The ends of compression
+// of the fastest-turning slip direction and at one turning scale |u| / |du/dtau| of each slipping
+// slip (beyond either the pair's estimate fails). The ends of compression
 // (v_y = 0) and restitution (W = (1 - e^2) W_c, eq. 17b), the instants a stuck contact breaks and
 // the end of a held law are events, located by Newton's method (or Illinois regula falsi) on the
 // step length, each trial a full Runge-Kutta step, and a short last correction one Heun step. The
@@ -2027,6 +2030,7 @@ CushionImpactResult ExactImpact::run() {
         // follows it too, instead of overshooting into a rejection every other step.
         double factor = stepFactor(step.error);
         if (previous_error_ > 0 && step.error > 0) {
+          // (Two estimated roots: within 0.41 %, against the 10 % of the safety factor.)
           const double trend = (h / previous_step_) / inverseEighthRoot(previous_error_) *
                                inverseEighthRoot(step.error);
           factor = std::clamp(stepFactor(step.error) * trend, kStepMinFactor, kStepMaxFactor);
