@@ -413,8 +413,10 @@ TEST(CushionExactSolver, ASlipPassingCloseByZeroIsNotCrossedInOneStep) {
 // Regression (docs/cushion.md, "Known: a stalled slip on a grippy cushion"): on a grippy snooker
 // cushion the nose slip falls along its line at a hundred-thousandth of its friction's scale, and
 // in tau the solver crawled until it ran out of steps at the default tolerance (and at 1e-11 to
-// 4e-11). With the step cap and a growing slip run in P it ends here; it still fails at 1e-13.
-TEST(CushionExactSolver, ASlipFallingVerySlowlyOnAGrippyCushionEndsAtTheDefaultTolerance) {
+// 4e-11). With the step cap and a growing slip run in P it ended here but failed at 1e-13; it has
+// ended at every tolerance from 1e-14 to 1e-8 since (checked at 1623933 and after), though nothing
+// in the method addresses the stall, so another step sequence may bring it back.
+TEST(CushionExactSolver, ASlipFallingVerySlowlyOnAGrippyCushionEnds) {
   CushionParams p;  // the paper's snooker cushion, with grippy friction
   p.cushion_friction = 0.38932961933842453;
   p.cloth_friction = 0.42093665031057043;
@@ -422,6 +424,10 @@ TEST(CushionExactSolver, ASlipFallingVerySlowlyOnAGrippyCushionEndsAtTheDefaultT
   in.v = {-1.228449284860766, 1.8704527528957964, 0};
   in.w = {-68.945796853890414, -45.281237234242937, -95.431490785264586};
   expectDefaultToleranceWithin(p, in, kSolverAccuracy);
+  const double V = in.v.norm();
+  const BallVelocity converged = solveExact(p, in, kConvergedTolerance).after;
+  const CushionImpactResult at_1e13 = solveExact(p, in, 1e-13);  // where it ran out of steps
+  EXPECT_LE(velocityDifference(at_1e13.after, converged, p.radius_m) / V, kSolverAccuracy);
 }
 
 // Regression (a grippy rolling impact of a random-parameter set): the nose sticks while the cloth,
