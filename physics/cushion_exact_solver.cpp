@@ -963,12 +963,10 @@ class ExactImpact {
   // lag-corrected as lagShare says. The general laws serve an exactly zero cloth slip and a phi*
   // that Newton does not find.
   [[gnu::always_inline]] Extended noseHeldRate(const Extended& y, double vy) {
-    const double uCx = y[kUCx], uCy = y[kUCy];
-    const double speed_C = std::sqrt(uCx * uCx + uCy * uCy);
-    if (!(speed_C > 0)) return withSlipRates(generalRate(y.head<kStateSize>()));
-    const double to_direction = 1 / speed_C;
-    const double inverse = 1 / (speed_C + factorSlip(1));  // sigma = |u_C| x inverse
-    const double dCx = uCx * to_direction, dCy = uCy * to_direction;
+    const SlidingSlip cloth_slip = slidingSlip(y, 1);
+    if (!(cloth_slip.speed > 0)) return generalExtendedRate(y);
+    const double speed_C = cloth_slip.speed, inverse = cloth_slip.inverse;
+    const double dCx = cloth_slip.x, dCy = cloth_slip.y;
     // The nose's stick law under the sliding cloth (frictionFor).
     const double gx = mu_[1] * dCx, gy = mu_[1] * dCy;
     double ay = (s_ * c_ - coupling_y_ * s_ * gy) / (diagonal_y_ + coupling_y_ * c_ * gy);
@@ -982,8 +980,7 @@ class ExactImpact {
       W << -3.5 * nose, -coupling_x_ * cloth * c_ * mu_[0] * dCx, 0,
           -(diagonal_y_ * nose + coupling_y_ * cloth * c_ * mu_[0] * dCy);
       Eigen::Vector2d phi;
-      if (!affineNewton(r0, W, contacts_[0].creep, &phi))
-        return withSlipRates(generalRate(y.head<kStateSize>()));
+      if (!affineNewton(r0, W, contacts_[0].creep, &phi)) return generalExtendedRate(y);
       if (lagCorrected(0)) {
         phi = lagCorrected(contacts_[0].creep_origin, phi,
                            affineLagShare(r0, W, phi, contacts_[0].creep_growth_order));
@@ -994,6 +991,28 @@ class ExactImpact {
     ++evaluations_;
     const double limit = mu_[1] * (s_ + c_ * ay);
     return scaledRate(speed_C * inverse, ax, ay, limit * dCx, limit * dCy, vy);
+  }
+
+  // The size of sliding contact k's slip held in y, its direction (x, y) and the inverse in sigma's
+  // factor for it, |u| / (|u| + s0): what the held rates need of the contact that slides. Only the
+  // size when it is not positive (the general laws then serve).
+  struct SlidingSlip {
+    double speed = 0, x = 0, y = 0, inverse = 0;
+  };
+  [[gnu::always_inline]] SlidingSlip slidingSlip(const Extended& y, int k) const {
+    const double ux = y[kUIx + 2 * k], uy = y[kUIy + 2 * k];
+    SlidingSlip slip;
+    slip.speed = std::sqrt(ux * ux + uy * uy);
+    if (!(slip.speed > 0)) return slip;
+    const double to_direction = 1 / slip.speed;
+    slip.inverse = 1 / (slip.speed + factorSlip(k));
+    slip.x = ux * to_direction;
+    slip.y = uy * to_direction;
+    return slip;
+  }
+  // The general laws' rate with the slips' rates, where a held rate does not apply.
+  Extended generalExtendedRate(const Extended& y) {
+    return withSlipRates(generalRate(y.head<kStateSize>()));
   }
 
   // The rate sigma (1, a_x, a_y, b_x, b_y, c v_y) with the slips' rates (slipRatesOf).
@@ -1017,14 +1036,12 @@ class ExactImpact {
   // (|r0| - k) / order x origin + r0, the direction of lagCorrected's blend. The general laws
   // serve an exactly zero nose slip and a drive on the cone's edge.
   [[gnu::always_inline]] Extended clothHeldRate(const Extended& y, double vy) {
-    const double uIx = y[kUIx], uIy = y[kUIy];
-    const double speed_I = std::sqrt(uIx * uIx + uIy * uIy);
-    if (!(speed_I > 0)) return withSlipRates(generalRate(y.head<kStateSize>()));
-    const double to_direction = 1 / speed_I;
-    const double inverse = 1 / (speed_I + factorSlip(0));  // sigma = |u_I| x inverse
-    const double ax = mu_[0] * (uIx * to_direction), ay = mu_[0] * (uIy * to_direction);
+    const SlidingSlip nose_slip = slidingSlip(y, 0);
+    if (!(nose_slip.speed > 0)) return generalExtendedRate(y);
+    const double speed_I = nose_slip.speed, inverse = nose_slip.inverse;
+    const double ax = mu_[0] * nose_slip.x, ay = mu_[0] * nose_slip.y;
     const double own = 3.5 * mu_[1] * (s_ + c_ * ay) * inverse_mass_;  // k
-    if (!(own > 0)) return withSlipRates(generalRate(y.head<kStateSize>()));
+    if (!(own > 0)) return generalExtendedRate(y);
     const double r0x = -coupling_x_ * ax * inverse_mass_;
     const double r0y = -(c_ + coupling_y_ * ay) * inverse_mass_;
     const double drive_squared = r0x * r0x + r0y * r0y;
@@ -1035,7 +1052,7 @@ class ExactImpact {
       by = -(c_ + coupling_y_ * ay) * (1 / 3.5);
     } else {
       const double drive = std::sqrt(drive_squared);
-      if (!(drive > own)) return withSlipRates(generalRate(y.head<kStateSize>()));
+      if (!(drive > own)) return generalExtendedRate(y);
       double dx = r0x, dy = r0y;
       const ContactState& cloth = contacts_[1];
       if (cloth.creep_from_rest) {
