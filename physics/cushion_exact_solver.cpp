@@ -455,7 +455,8 @@ struct Step {
   State z;
   State rate_at_end;  // FSAL: the rate at the step's end, reused as the next step's first stage
   double error = 0;   // scaled error norm; <= 1 accepts
-  // (u_I, u_C) at z as slips() gives them (set by finishStep; zero for a landing's own steps).
+  // (u_I, u_C) at z as slips() gives them, set by finishStep (read only for a main-loop step
+  // accepted as it is: a step located or landed on may carry another step's).
   std::array<Eigen::Vector2d, 2> slips_at_end = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
 };
 
@@ -492,9 +493,11 @@ class ExactImpact {
     const std::array<double, 2> direction_rate = {
         3.5 * mu_[0] * inverse_mass_, 3.5 * (mu_[1] * (s_ + c_ * mu_[0])) * inverse_mass_};
     for (int k = 0; k < 2; ++k) {
-      direction_time_scale_[k] = direction_rate[k] > 0
-                                     ? kSlipDirectionTimeConstants / direction_rate[k]
-                                     : std::numeric_limits<double>::infinity();
+      // (A rate of a subnormal friction coefficient would overflow the quotient.)
+      direction_time_scale_[k] =
+          direction_rate[k] > kSlipDirectionTimeConstants / std::numeric_limits<double>::max()
+              ? kSlipDirectionTimeConstants / direction_rate[k]
+              : std::numeric_limits<double>::infinity();
     }
   }
 
@@ -1904,8 +1907,10 @@ class ExactImpact {
   struct ScaledContactMatrix {
     double diagonal_x = 0, diagonal_y = 0, coupling_x = 0, coupling_y = 0, sin_cos = 0, cos = 0;
   } scaled_;
-  // 7/2 mu / M per contact (1 / (N s)): how fast its own friction turns a slip of unit size.
-  std::array<double, 2> direction_time_scale_{};  // kSlipDirectionTimeConstants / 7/2 mu / M
+  // kSlipDirectionTimeConstants over 7/2 mu / M per contact (N s per unit of slip: the impulse over
+  // which its own friction turns a slip of unit size by that many radians); infinite where that
+  // rate is zero or too small for the quotient (see slipDirectionStep).
+  std::array<double, 2> direction_time_scale_{};
   State error_scale_;
   State inverse_error_scale_;  // 1 / error_scale_, element by element
   std::array<ContactState, 2> contacts_;
@@ -2074,8 +2079,9 @@ CushionImpactResult ExactImpact::run() {
       }
       continue;
     }
-    // An event breaks the step trend, except a phase end landed on: what ends the impact changes
-    // there, not the dynamics, so the trend of the steps before it goes on (below).
+    // An event breaks the step trend, except a phase end landed on where nothing else happens: what
+    // ends the impact changes there, not the dynamics, so the trend of the steps before it goes on
+    // (below; a contact event due at the landing breaks it too).
     if (!aim_landed) previous_error_ = 0;
     missed_landings_ = 0;
     bool retry = false;
@@ -2097,22 +2103,19 @@ CushionImpactResult ExactImpact::run() {
     }
     if (retry) continue;  // a located stretch broke the tolerance: a shorter step first
     // The next step goes on as the controller proposed before any cut to aim (as after a located
-    // event, which keeps the step that crossed it). After a landing that proposal was for a step
-    // from the aimed step's start; where the steps shrink, the trend applies once more from the
-    // phase end (so the first step after the end of compression is not rejected, as a quarter of
-    // them were: 1.3 rejections per impact of play).
+    // event, which keeps the step that crossed it).
     if (aimed) h = proposed_h;
-    if (aim_landed && previous_step_ > 0) h *= std::min(1.0, proposed_h / previous_step_);
     if (tracing && length > 0) sampleInside(z, k1, length, landed.z, landed.rate_at_end);
     z = landed.z;
     updateCreepGuesses(z);
-    bool phase_ends = false;
+    bool phase_ends = false, contact_events = false;
     for (int i = 0; i < events.size(); ++i) {
       if (i != first && eventValue(events[i], z) > eventTolerance(events[i])) continue;
       if (events[i].phase_end) {
         phase_ends = true;
         continue;
       }
+      contact_events = true;
       if (events[i].approach_end) {  // its slip has vanished (what is off its line is within
         hold(events[i].contact, z);  // the misalignment limit, which holding it removes)
         continue;
@@ -2145,6 +2148,15 @@ CushionImpactResult ExactImpact::run() {
         setMode(k, ContactMode::Slip);
       }
     }
+    if (contact_events) {
+      previous_error_ = 0;
+    } else if (aim_landed) {
+      // The proposal was for a step from the aimed step's start (its length after the step's
+      // bounds); where the steps shrink, their trend applies once more from the phase end (so the
+      // first step after the end of compression is not rejected, as a quarter of them were: 1.3
+      // rejections per impact of play).
+      h *= std::min(1.0, proposed_h / previous_step_);  // aimed: previous_step_ > 0
+    }
     reportModes(z);
     if (tracing && length > 0) sample(z);
     k1 = rate(z);
@@ -2156,6 +2168,8 @@ CushionImpactResult ExactImpact::run() {
       break;
     }
     compressing_ = false;
+    last_step_ = 0;  // the last step's phase-end values were of compression's function: none to
+                     // extrapolate restitution's from
     result_.compression_impulse_Ns = z[kP];
     result_.compression_work_J = z[kWork];
     work_target_ = (1 - params_.restitution * params_.restitution) * z[kWork];  // eq. 17b

@@ -102,6 +102,25 @@ TEST(CushionExactSolver, FrictionlessLimitIsExact) {
   }
 }
 
+// A subnormal friction coefficient (validation accepts any mu >= 0) is solved with the traps on
+// and acts as none: the bounds derived from mu (a step spans a few of a slip direction's time
+// constants, M / (7/2 mu)) must not overflow (they did for mu near 1e-310).
+TEST(CushionExactSolver, ASubnormalFrictionCoefficientActsAsNone) {
+  RandomImpacts random(kSeed + 23);
+  for (int i = 0; i < 40; ++i) {
+    test::RandomImpact impact = random.next(true);
+    impact.params.cushion_friction = i % 2 == 0 ? 1e-310 : 0;
+    impact.params.cloth_friction = i % 2 == 0 ? 0 : 1e-310;
+    const CushionParams& p = impact.params;
+    const double vy0 = impact.incoming.v.y(), V0 = impact.speed_mps;
+    const CushionImpactResult result = solveExact(p, impact.incoming);
+    BallVelocity expected = impact.incoming;
+    expected.v.y() = -p.restitution * vy0;
+    EXPECT_LT(velocityDifference(result.after, expected, p.radius_m), kFrictionlessRelative * V0)
+        << "impact " << i;
+  }
+}
+
 // --- 2. energy
 // -------------------------------------------------------------------------------------
 
