@@ -2153,8 +2153,8 @@ CushionImpactResult ExactImpact::run() {
     } else if (aim_landed) {
       // The proposal was for a step from the aimed step's start (its length after the step's
       // bounds); where the steps shrink, their trend applies once more from the phase end (so the
-      // first step after the end of compression is not rejected, as a quarter of them were: 1.3
-      // rejections per impact of play).
+      // first step after the end of compression is not rejected, as about half of them were, with
+      // 1.3 rejections per impact of play within three steps of that end).
       h *= std::min(1.0, proposed_h / previous_step_);  // aimed: previous_step_ > 0
     }
     reportModes(z);
