@@ -2069,7 +2069,7 @@ CushionImpactResult ExactImpact::run() {
           // (Two estimated roots: within 0.41 %, against the 10 % of the safety factor.)
           const double trend = (h / previous_step_) / inverseEighthRoot(previous_error_) *
                                inverseEighthRoot(step.error);
-          factor = std::clamp(stepFactor(step.error) * trend, kStepMinFactor, kStepMaxFactor);
+          factor = std::clamp(factor * trend, kStepMinFactor, kStepMaxFactor);
         }
         previous_step_ = h;
         previous_error_ = step.error;
@@ -2079,9 +2079,8 @@ CushionImpactResult ExactImpact::run() {
       }
       continue;
     }
-    // An event breaks the step trend, except a phase end landed on where nothing else happens: what
-    // ends the impact changes there, not the dynamics, so the trend of the steps before it goes on
-    // (below; a contact event due at the landing breaks it too).
+    // An event breaks the step trend, except a phase end landed on where nothing else happens (that
+    // case is settled below, once the events due at the landing are known).
     if (!aim_landed) previous_error_ = 0;
     missed_landings_ = 0;
     bool retry = false;
@@ -2148,9 +2147,10 @@ CushionImpactResult ExactImpact::run() {
         setMode(k, ContactMode::Slip);
       }
     }
-    if (contact_events) {
-      previous_error_ = 0;
+    if (aim_landed && contact_events) {
+      previous_error_ = 0;  // the laws changed at the landing: the trend is broken there too
     } else if (aim_landed) {
+      // Only what ends the impact changed, not the dynamics: the trend of the steps before goes on.
       // The proposal was for a step from the aimed step's start (its length after the step's
       // bounds); where the steps shrink, their trend applies once more from the phase end (so the
       // first step after the end of compression is not rejected, as about half of them were, with
