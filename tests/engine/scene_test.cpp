@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -651,6 +653,49 @@ TEST(ScenePhysics, BadOverridesAreRefusedNamingFileKeyAndValue) {
 
 namespace baize::engine {
 namespace {
+
+// runScene keeps the last table's geometry for the next shot on the same thread (engine/scene.cpp).
+// A shot on another table, and one on the first table again, give exactly what each gives on a
+// thread of its own (which starts with none kept): nothing of one table's outline, rail box or
+// pockets reaches a shot on another.
+TEST(Scene, ShotsOnDifferentTablesBackToBackGiveWhatEachGivesAlone) {
+  auto bankShot = [](const std::string& table) {
+    nlohmann::json document = nlohmann::json::parse(R"({"ball_set": "pool",
+      "balls": {"cue": [0.266, 0.146], "1": [0.2, -0.35]},
+      "shot": {"heading_deg": 262.8, "speed_mps": 2.5}})");
+    document["table"] = table;
+    return sceneFromJson(document, table + "-bank.json");
+  };
+  auto eventTimes = [](const SceneRun& run) {
+    std::vector<double> times;
+    for (const Event& e : run.result.events) times.push_back(e.time_s);
+    for (const BallRecord& b : run.result.final_balls) {
+      times.push_back(b.state.position.x());
+      times.push_back(b.state.position.y());
+    }
+    return times;
+  };
+  const std::vector<std::string> tables = {"pool-7ft", "pool-9ft", "snooker-12ft", "pool-7ft"};
+  for (const std::string& table : tables) {
+    const Scene scene = bankShot(table);
+    std::vector<double> alone;
+    std::thread([&] { alone = eventTimes(runScene(scene)); }).join();
+    EXPECT_EQ(eventTimes(runScene(scene)), alone) << table << " after another table";
+    EXPECT_EQ(eventTimes(runScene(scene)), alone) << table << " after itself";
+  }
+  // The tables differ where the shot goes: the first cushion is met at different times.
+  std::vector<double> first_cushion;
+  for (const char* table : {"pool-7ft", "pool-9ft"}) {
+    for (const Event& e : runScene(bankShot(table)).result.events) {
+      if (e.kind == EventKind::Cushion) {
+        first_cushion.push_back(e.time_s);
+        break;
+      }
+    }
+  }
+  ASSERT_EQ(first_cushion.size(), 2u);
+  EXPECT_NE(first_cushion[0], first_cushion[1]);
+}
 
 // Bit-for-bit determinism, pinned: a hash of every event's time and every final state of the
 // shipped 9-ball break. A change of compiler flags (FMA contraction), library or evaluation order
