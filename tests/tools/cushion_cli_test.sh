@@ -237,6 +237,8 @@ assert all(float(r["cushion_slip_mps"]) >= 0 and float(r["cloth_slip_mps"]) >= 0
   fail "bench exited $?"
 grep -qF "speed ratio" "$work/bench.out" || fail "bench prints no speed ratio"
 grep -qF "accuracy ratio" "$work/bench.out" || fail "bench prints no accuracy ratio"
+grep -qE "^exact default: [0-9]+\.[0-9] evaluations per impact; 0 of 30 impacts above 5e-10 V0, 0 above the promised 1e-9 V0 \(kept\)$" \
+  "$work/bench.out" || fail "bench does not report the exact solver's promise: $(grep "exact default" "$work/bench.out")"
 [[ ! -e "$work/bench.csv.tmp" ]] || fail "the bench left its temporary file"
 check_python '
 with open(sys.argv[1]) as f:
@@ -302,6 +304,46 @@ assert shots.keys() == pool.keys()
 assert shots["defaultexact"] <= 1e-9, shots
 assert shots["defaultexact"] < shots["N=50000paper"] < shots["N=100paper"], shots
 ' "$work/bench_pool.csv" "$work/bench_shots.csv"
+grep -qE "^exact default: [0-9]+\.[0-9] evaluations per impact; [0-9]+ of [0-9]+ impacts above 5e-10 V0, 0 above the promised 1e-9 V0 \(kept\)$" \
+  "$work/bench_shots.out" || fail "the shots bench does not report the exact solver's promise: $(grep "exact default" "$work/bench_shots.out")"
+
+# ---- 7. The sets that check the exact solver's promise alone: spin about every axis, and grippy
+# cushions and cloth drawn per impact. One row each, the same for the same seed, another for
+# another seed; the promise kept on these small draws.
+for run in spin_a spin_b; do
+  "$baize" bench cushion --set spinning --impacts 30 --mass 0.17 --radius 0.028575 --h 0.03629 \
+    --mu-s 0.2 --csv "$work/$run.csv" >"$work/$run.out" || fail "bench --set spinning exited $?"
+done
+"$baize" bench cushion --set spinning --impacts 30 --seed 2 --mass 0.17 --radius 0.028575 \
+  --h 0.03629 --mu-s 0.2 --csv "$work/spin_c.csv" >"$work/spin_c.out" || fail "seed 2 exited $?"
+"$baize" bench cushion --set grippy --impacts 10 --seed 3 --csv "$work/grippy.csv" \
+  >"$work/grippy.out" || fail "bench --set grippy exited $?"
+grep -qF "the spinning set, 30 impacts (seed 1;" "$work/spin_a.out" ||
+  fail "the spinning bench does not name its set and seed: $(head -1 "$work/spin_a.out")"
+grep -qF "mu_w and mu_s drawn per impact" "$work/grippy.out" ||
+  fail "the grippy bench does not say its frictions are drawn: $(head -2 "$work/grippy.out")"
+grep -qF "0 above the promised 1e-9 V0 (kept)" "$work/grippy.out" || fail "grippy: promise line"
+grep -qE "^largest error: impact [0-9]+, V0 [0-9.e-]+ m/s, alpha " "$work/spin_a.out" ||
+  fail "the spinning bench does not name its worst impact"
+cmp -s "$work/spin_a.csv" "$work/spin_b.csv" || fail "the same seed gave another spinning set"
+check_python '
+header = "set,impacts,evaluations_per_impact,above_half_promise,above_promise,max_error"
+for path, name, n in ((sys.argv[1], "spinning", 30), (sys.argv[3], "grippy", 10)):
+    with open(path) as f:
+        assert f.readline().strip() == header, path
+    (row,) = rows(path)
+    assert row["set"] == name and int(row["impacts"]) == n, row
+    assert float(row["evaluations_per_impact"]) > 12, row  # at least one Runge-Kutta step
+    assert int(row["above_promise"]) == 0 <= int(row["above_half_promise"]), row
+    assert 0 < float(row["max_error"]) <= 1e-9, row
+(a,) = rows(sys.argv[1]); (c,) = rows(sys.argv[2])
+assert a["max_error"] != c["max_error"], (a, c)
+' "$work/spin_a.csv" "$work/spin_c.csv" "$work/grippy.csv"
+expect_error 2 "--set: foo not in {drawn,spinning,grippy}" bench cushion --set foo
+expect_error 2 "--seed draws the spinning or grippy set" bench cushion --seed 3 --impacts 1
+expect_error 2 "--repeat times the drawn sets; the grippy set is not timed" \
+  bench cushion --set grippy --repeat 2
+expect_error 2 "--from-shots excludes --set" bench cushion --set spinning --from-shots 2
 expect_error 2 "--from-shots = 0 is not allowed" bench cushion --from-shots 0
 expect_error 2 "--mass excludes --from-shots" bench cushion --from-shots 1 --mass 0.2
 expect_error 2 "--impacts excludes --from-shots" bench cushion --from-shots 1 --impacts 3

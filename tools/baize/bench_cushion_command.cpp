@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -23,12 +24,18 @@ constexpr int kDefaultPasses = 3;    // timed passes over the set; each impact k
 constexpr double kSpeedTarget = 20;  // exact default at least 20x faster than paper N=5000
 constexpr double kAccuracyTarget = 1000;  // and at least 1000x more accurate
 
+// The spinning and grippy sets' seed unless --seed gives another.
+constexpr std::uint64_t kDefaultStressSeed = 1;
+
 struct BenchFlags {
   std::string csv_path;
   int impacts = kDefaultBenchImpacts;
   int passes = kDefaultPasses;
-  CushionParamFlags cushion_flags;  // default: the paper's snooker values
-  std::optional<int> from_shots;    // given: the impacts of this many random single shots instead
+  CushionParamFlags cushion_flags;    // default: the paper's snooker values
+  std::optional<int> from_shots;      // given: the impacts of this many random single shots instead
+  std::string set = "drawn";          // drawn (the wide and rolling sets), spinning or grippy
+  std::optional<std::uint64_t> seed;  // of the spinning or grippy set
+  bool repeat_given = false;          // --repeat on the command line (those sets are not timed)
 };
 
 std::string csvRow(const BenchRow& row) {
@@ -53,6 +60,86 @@ void printRatio(const std::string& what, double ratio, double target) {
   std::cout << '\n';
 }
 
+// A power-of-ten-like value as people write it: "5e-10", not the stream's "5e-010" or "5e-10"
+// with padding.
+std::string exponentText(double value) {
+  std::ostringstream text;
+  text << std::setprecision(3) << value;
+  std::string s = text.str();
+  const std::size_t e = s.find('e');
+  if (e != std::string::npos) {
+    std::size_t digits = e + 2;  // after the sign
+    while (digits + 1 < s.size() && s[digits] == '0') s.erase(digits, 1);
+  }
+  return s;
+}
+
+// The exact solver's promise on the exact default's row (every mode prints it).
+void printPromise(const BenchRow& exact, int impacts) {
+  std::cout << "exact default: " << std::fixed << std::setprecision(1)
+            << exact.evaluations_per_impact << " evaluations per impact; "
+            << exact.above_half_promise << " of " << impacts << " impacts above "
+            << exponentText(0.5 * kExactPromise) << " V0, " << exact.above_promise
+            << " above the promised " << exponentText(kExactPromise) << " V0 ("
+            << (exact.above_promise == 0 ? "kept" : "NOT kept") << ")\n";
+  std::cout.unsetf(std::ios::floatfield);
+}
+
+// --set spinning or grippy: the exact solver at its default against the reference, no timing.
+void runStressSet(const BenchFlags& flags, const physics::CushionParams& params,
+                  std::optional<AtomicFile>* csv) {
+  const std::uint64_t seed = flags.seed.value_or(kDefaultStressSeed);
+  const bool spinning = flags.set == "spinning";
+  const std::vector<BenchInput> inputs =
+      spinning ? spinningBenchInputs(params.radius_m, flags.impacts, seed)
+               : grippyBenchInputs(params, flags.impacts, seed);
+  std::cout << "baize bench cushion: the " << flags.set << " set, " << flags.impacts
+            << " impacts (seed " << seed << "; V0 in [0.1, 2.5] m/s, alpha in [1, 179] deg, "
+            << (spinning ? "spin about each axis in [-3, 3] V0/R"
+                         : "mu_s in [0.35, 0.425], mu_w in [0, 0.4], topspin in [0.8, 1.05] "
+                           "V0/R, sidespin in [-1.5, 1.5] V0/R")
+            << "), the exact solver at its default tolerance, not timed\n";
+  std::cout << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
+            << physics::valueText(params.radius_m) << " m, h "
+            << physics::valueText(params.contact_height_m) << " m, e_e "
+            << physics::valueText(params.restitution)
+            << (spinning ? ", mu_w " + physics::valueText(params.cushion_friction) + ", mu_s " +
+                               physics::valueText(params.cloth_friction)
+                         : std::string(", mu_w and mu_s drawn per impact"))
+            << '\n';
+  const PromiseReport report = scorePromise(params, inputs);
+  const std::string header =
+      "set,impacts,evaluations_per_impact,above_half_promise,"
+      "above_promise,max_error";
+  std::ostringstream row;
+  row << flags.set << ',' << inputs.size() << ',' << std::fixed << std::setprecision(2)
+      << report.row.evaluations_per_impact << ',' << report.row.above_half_promise << ','
+      << report.row.above_promise << ',' << physics::valueText(report.row.max_error);
+  std::cout << header << '\n' << row.str() << '\n';
+  printPromise(report.row, static_cast<int>(inputs.size()));
+  const BenchInput& worst = inputs[report.worst];
+  const physics::CushionParams& own = worst.params ? *worst.params : params;
+  const double spin_unit = worst.speed_mps / own.radius_m;  // V0 / R
+  std::cout << "largest error: impact " << report.worst << ", V0 "
+            << physics::valueText(worst.speed_mps) << " m/s, alpha "
+            << physics::valueText(std::atan2(worst.incoming.v.y(), worst.incoming.v.x()) * 180 /
+                                  M_PI)
+            << " deg, spin (" << physics::valueText(worst.incoming.w.x() / spin_unit) << ", "
+            << physics::valueText(worst.incoming.w.y() / spin_unit) << ", "
+            << physics::valueText(worst.incoming.w.z() / spin_unit) << ") V0/R, mu_w "
+            << physics::valueText(own.cushion_friction) << ", mu_s "
+            << physics::valueText(own.cloth_friction) << '\n';
+  std::cout << "reference: exact solver at tolerance " << kReferenceTolerance
+            << "; it differs from the solution at tolerance " << kReferenceCheckTolerance
+            << " by at most " << std::setprecision(3) << report.reference_check_error
+            << " (same error measure)\n";
+  if (*csv) {
+    (*csv)->stream() << header << '\n' << row.str() << '\n';
+    (*csv)->commit();
+    std::cout << "wrote " << flags.csv_path << '\n';
+  }
+}
+
 void runBench(const BenchFlags& flags) {
   if (flags.impacts < 1 || flags.impacts > kMaxBenchCount) {
     rejectFlag("--impacts", flags.impacts, kBenchCountAllowed);
@@ -63,17 +150,29 @@ void runBench(const BenchFlags& flags) {
   if (flags.from_shots && (*flags.from_shots < 1 || *flags.from_shots > kMaxBenchCount)) {
     rejectFlag("--from-shots", *flags.from_shots, kBenchCountAllowed);
   }
+  if (flags.repeat_given && flags.set != "drawn") {
+    throw UsageError("--repeat times the drawn sets; the " + flags.set + " set is not timed");
+  }
+  if (flags.seed && flags.set == "drawn") {
+    throw UsageError(
+        "--seed draws the spinning or grippy set (--set spinning or --set grippy); "
+        "the drawn sets' seeds are fixed");
+  }
   physics::CushionParams params = cushionParamsOf(flags.cushion_flags);
   // Opened first, so that an unwritable path fails before the measurement.
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
+  if (flags.set != "drawn") {
+    runStressSet(flags, params, &csv);
+    return;
+  }
 
   std::vector<BenchInput> inputs;
   if (flags.from_shots) {
     const std::vector<physics::BallVelocity> impacts =
         cushionImpactsOf(randomSingleShots(*flags.from_shots), &params);
     for (const physics::BallVelocity& incoming : impacts) {
-      inputs.push_back({incoming, std::hypot(incoming.v.x(), incoming.v.y()), true});
+      inputs.push_back({incoming, std::hypot(incoming.v.x(), incoming.v.y()), true, std::nullopt});
     }
     if (inputs.empty()) {
       rejectFlag("--from-shots", *flags.from_shots, "those shots meet no cushion; take more");
@@ -118,6 +217,7 @@ void runBench(const BenchFlags& flags) {
              paper.median_ns / exact.median_ns, targets ? kSpeedTarget : 0);
   printRatio("accuracy ratio (paper N=5000 max_error / exact default max_error)",
              paper.max_error / exact.max_error, targets ? kAccuracyTarget : 0);
+  printPromise(exact, static_cast<int>(inputs.size()));
 
   if (csv) {
     csv->stream() << header << '\n';
@@ -139,17 +239,32 @@ void addBenchCushionCommand(CLI::App& bench) {
       ->check(notEmpty());
   command->add_option("--impacts", flags->impacts, "impacts in the set (a smoke run can use few)")
       ->capture_default_str();
-  command->add_option("--repeat", flags->passes, "timed passes; each impact keeps its best time")
-      ->capture_default_str();
+  CLI::Option* repeat =
+      command
+          ->add_option("--repeat", flags->passes, "timed passes; each impact keeps its best time")
+          ->capture_default_str();
   addCushionParamFlags(command, &flags->cushion_flags);
   CLI::Option* from_shots =
       command->add_option("--from-shots", flags->from_shots,
                           "score the impacts of this many of `baize bench shots`' random single "
                           "shots instead of the seeded sets (their table's cushion)");
+  CLI::Option* set =
+      command
+          ->add_option("--set", flags->set,
+                       "drawn: the wide and rolling sets, timed; spinning: spin about every axis; "
+                       "grippy: grippy cushions and cloth (these two score the exact solver's "
+                       "promise only, untimed)")
+          ->check(CLI::IsMember({"drawn", "spinning", "grippy"}))
+          ->capture_default_str();
+  command->add_option(
+      "--seed", flags->seed,
+      "seed of the spinning or grippy set (default " + std::to_string(kDefaultStressSeed) + ")");
   for (const char* name : {"--impacts", "--mass", "--radius", "--h", "--e", "--mu-w", "--mu-s"}) {
     from_shots->excludes(name);
   }
-  command->callback([flags] {
+  from_shots->excludes(set);
+  command->callback([flags, repeat] {
+    flags->repeat_given = repeat->count() > 0;
     if (const int status = runReportingErrors("bench cushion", [&] { runBench(*flags); })) {
       throw CLI::RuntimeError(status);
     }

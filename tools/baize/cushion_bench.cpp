@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 #include "tools/baize/median.h"
 
@@ -46,6 +47,30 @@ struct BenchImpact {
   bool timed;                       // of the wide set: median_ns is taken over these
 };
 
+// Adds one scored impact to the row's error, evaluation and promise tallies (evaluations: the
+// exact solver's rate evaluations, the paper scheme's steps).
+void tally(const physics::CushionImpactResult& result, double error, BenchRow* row) {
+  row->max_error = std::max(row->max_error, error);
+  row->evaluations_per_impact += static_cast<double>(result.rhs_evaluations);
+  row->above_half_promise += error > 0.5 * kExactPromise;
+  row->above_promise += error > kExactPromise;
+}
+
+// The reference outgoing state of an input, and how far the looser check solution lies from it.
+physics::BallVelocity referenceOf(const physics::CushionParams& params, const BenchInput& input,
+                                  double* check_error) {
+  SolverSetting reference_setting;
+  reference_setting.exact_tolerance = kReferenceTolerance;
+  SolverSetting check_setting;
+  check_setting.exact_tolerance = kReferenceCheckTolerance;
+  const physics::BallVelocity reference =
+      solveCushionShot(params, input.incoming, reference_setting).after;
+  const physics::BallVelocity check = solveCushionShot(params, input.incoming, check_setting).after;
+  *check_error =
+      std::max(*check_error, impactError(check, reference, params.radius_m, input.speed_mps));
+  return reference;
+}
+
 BenchRow measure(const physics::CushionParams& params, const std::vector<BenchImpact>& impacts,
                  const SolverSetting& setting, int passes) {
   BenchRow row;
@@ -58,10 +83,12 @@ BenchRow measure(const physics::CushionParams& params, const std::vector<BenchIm
     const physics::CushionImpactResult result =
         solveCushionShot(params, impacts[i].incoming, setting);
     const double once_ns = std::max(1.0, elapsedNs(start, Clock::now()));
-    row.max_error = std::max(row.max_error, impactError(result.after, impacts[i].reference,
-                                                        params.radius_m, impacts[i].speed_mps));
+    tally(result,
+          impactError(result.after, impacts[i].reference, params.radius_m, impacts[i].speed_mps),
+          &row);
     batch[i] = std::min(kMaxBatch, static_cast<long>(std::ceil(kMinBatchNs / once_ns)));
   }
+  row.evaluations_per_impact /= static_cast<double>(std::max<std::size_t>(1, impacts.size()));
   for (int pass = 0; pass < passes; ++pass) {
     for (std::size_t i = 0; i < impacts.size(); ++i) {
       if (!impacts[i].timed) continue;
@@ -136,28 +163,78 @@ std::vector<BenchInput> seededBenchInputs(double radius_m, int count) {
   std::vector<BenchInput> inputs;
   for (std::size_t i = 0; i < shots.size(); ++i) {
     const bool timed = i < static_cast<std::size_t>(count);
-    inputs.push_back({incomingBallOf(shots[i], radius_m), shots[i].speed_mps, timed});
+    inputs.push_back({incomingBallOf(shots[i], radius_m), shots[i].speed_mps, timed, std::nullopt});
   }
   return inputs;
+}
+
+std::vector<BenchInput> spinningBenchInputs(double radius_m, int count, std::uint64_t seed) {
+  std::mt19937_64 generator(seed);
+  std::vector<BenchInput> inputs;
+  for (int i = 0; i < count; ++i) {
+    BenchInput input;
+    input.speed_mps = uniform(generator, 0.1, 2.5);
+    const double alpha_rad = uniform(generator, 1, 179) * M_PI / 180;
+    input.incoming = physics::incomingBall(input.speed_mps, alpha_rad, 0, 0);
+    const double spin_unit = input.speed_mps / radius_m;  // V0 / R, rad/s
+    for (int axis = 0; axis < 3; ++axis)
+      input.incoming.w[axis] = uniform(generator, -3, 3) * spin_unit;
+    input.timed = false;
+    inputs.push_back(input);
+  }
+  return inputs;
+}
+
+std::vector<BenchInput> grippyBenchInputs(const physics::CushionParams& params, int count,
+                                          std::uint64_t seed) {
+  std::mt19937_64 generator(seed);
+  std::vector<BenchInput> inputs;
+  for (int i = 0; i < count; ++i) {
+    physics::CushionParams grippy = params;
+    grippy.cloth_friction = uniform(generator, 0.35, 0.425);
+    grippy.cushion_friction = uniform(generator, 0, 0.4);
+    CushionShot shot;
+    shot.speed_mps = uniform(generator, 0.1, 2.5);
+    shot.angle_deg = uniform(generator, 1, 179);
+    shot.topspin_k = uniform(generator, 0.8, 1.05);
+    shot.sidespin_k = uniform(generator, -1.5, 1.5);
+    BenchInput input;
+    input.incoming = incomingBallOf(shot, params.radius_m);
+    input.speed_mps = shot.speed_mps;
+    input.timed = false;
+    input.params = grippy;
+    inputs.push_back(input);
+  }
+  return inputs;
+}
+
+PromiseReport scorePromise(const physics::CushionParams& params,
+                           const std::vector<BenchInput>& inputs) {
+  PromiseReport report;
+  const SolverSetting exact_default;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const physics::CushionParams& own = inputs[i].params ? *inputs[i].params : params;
+    const physics::BallVelocity reference =
+        referenceOf(own, inputs[i], &report.reference_check_error);
+    const physics::CushionImpactResult result =
+        solveCushionShot(own, inputs[i].incoming, exact_default);
+    const double error = impactError(result.after, reference, own.radius_m, inputs[i].speed_mps);
+    if (error > report.row.max_error) report.worst = i;
+    tally(result, error, &report.row);
+  }
+  report.row.evaluations_per_impact /= static_cast<double>(std::max<std::size_t>(1, inputs.size()));
+  return report;
 }
 
 BenchReport runCushionBench(const physics::CushionParams& params,
                             const std::vector<BenchInput>& inputs, int passes,
                             const std::function<void(const BenchRow&)>& on_row) {
-  SolverSetting reference_setting;
-  reference_setting.exact_tolerance = kReferenceTolerance;
-  SolverSetting check_setting;
-  check_setting.exact_tolerance = kReferenceCheckTolerance;
-
   BenchReport report;
   std::vector<BenchImpact> impacts;
   for (const BenchInput& input : inputs) {
+    if (input.params) throw std::logic_error("runCushionBench: an input with its own cushion");
     const physics::BallVelocity reference =
-        solveCushionShot(params, input.incoming, reference_setting).after;
-    const physics::BallVelocity check = solveCushionShot(params, input.incoming, check_setting).after;
-    report.reference_check_error =
-        std::max(report.reference_check_error,
-                 impactError(check, reference, params.radius_m, input.speed_mps));
+        referenceOf(params, input, &report.reference_check_error);
     impacts.push_back({input.speed_mps, input.incoming, reference, input.timed});
   }
   for (const SolverSetting& setting : benchSettings()) {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "physics/cushion_model.h"
@@ -40,10 +41,19 @@ int rollingBenchCount(int count);
 // paper N = 100, 1000, 5000, 50000; exact at its default and at tolerances 1e-6 ... 1e-12.
 std::vector<SolverSetting> benchSettings();
 
+// The exact solver's promise: at its default tolerance, each outgoing velocity within this of the
+// converged solution, in units of V0 (physics/cushion_exact_solver.h).
+constexpr double kExactPromise = 1e-9;
+
 struct BenchRow {
   SolverSetting setting;
   double median_ns = 0;  // median over the wide set's impacts of the time per impact, ns
   double max_error = 0;  // as defined above, dimensionless
+  // Over every impact scored: the rate evaluations (exact solver) or steps (paper scheme) per
+  // impact, and how many impacts lie above half the promise and above it.
+  double evaluations_per_impact = 0;
+  int above_half_promise = 0;
+  int above_promise = 0;
 };
 
 struct BenchReport {
@@ -58,14 +68,38 @@ struct BenchInput {
   physics::BallVelocity incoming;
   double speed_mps = 0;
   bool timed = true;
+  std::optional<physics::CushionParams> params;  // its own cushion and cloth, else the bench's
 };
 
 // The seeded sets: benchShots(count), timed, then rollingBenchShots(rollingBenchCount(count)).
 std::vector<BenchInput> seededBenchInputs(double radius_m, int count);
 
-// Times every setting over the inputs (each impact's time is the least over `passes` timed
-// batches) and scores it against the reference. Calls on_row after each setting (for progress
-// output).
+// The spinning set, to check the exact solver's promise on spins the other sets never draw: V0
+// uniform in [0.1, 2.5] m/s, alpha in [1, 179] deg, and the spin about each of the three axes
+// uniform in [-3, 3] V0/R on its own (so also spin about the line of travel), drawn as the sets
+// above from std::mt19937_64 seeded with `seed`. None is timed.
+std::vector<BenchInput> spinningBenchInputs(double radius_m, int count, std::uint64_t seed);
+
+// The grippy set, contacts much grippier than real cushions and cloth: each impact has its own
+// mu_s uniform in [0.35, 0.425] and mu_w in [0, 0.4] (the rest is `params`), and a near-rolling
+// ball: V0 in [0.1, 2.5] m/s, alpha in [1, 179] deg, topspin k in [0.8, 1.05], sidespin k in
+// [-1.5, 1.5]; drawn as above from `seed`. None is timed.
+std::vector<BenchInput> grippyBenchInputs(const physics::CushionParams& params, int count,
+                                          std::uint64_t seed);
+
+// The exact solver at its default tolerance over the inputs, scored against the reference (each
+// input with its own cushion where it has one): what its promise is checked on.
+struct PromiseReport {
+  BenchRow row;                      // median_ns unset
+  std::size_t worst = 0;             // the input with the largest error
+  double reference_check_error = 0;  // as in BenchReport
+};
+PromiseReport scorePromise(const physics::CushionParams& params,
+                           const std::vector<BenchInput>& inputs);
+
+// Times every setting over the inputs (none with its own cushion) (each impact's time is the least
+// over `passes` timed batches) and scores it against the reference. Calls on_row after each setting
+// (for progress output).
 BenchReport runCushionBench(const physics::CushionParams& params,
                             const std::vector<BenchInput>& inputs, int passes,
                             const std::function<void(const BenchRow&)>& on_row = {});
