@@ -101,69 +101,6 @@ void readCueShot(const JsonReader& shot, physics::CueShot* cue) {
   }
 }
 
-// The geometry of the last table run on this thread: shots run back to back (a bench, a search over
-// many shots, a batch) mostly share one table, and building its outline and rail box took about a
-// tenth of the event loop's own work in a random single shot. Kept with the parts of the table it
-// is built from, and used again only when they are equal value for value.
-struct GeometryCache {
-  std::vector<CushionSegment> cushions;
-  std::vector<JawArc> jaws;
-  std::vector<Circle> captures;
-  TableGeometry geometry;
-  bool filled = false;
-};
-
-bool sameCushions(const std::vector<CushionSegment>& a, const std::vector<CushionSegment>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a[i].start_m != b[i].start_m || a[i].end_m != b[i].end_m ||
-        a[i].inward_normal != b[i].inward_normal || a[i].pocket != b[i].pocket) {
-      return false;
-    }
-  }
-  return true;
-}
-
-bool sameJaws(const std::vector<JawArc>& a, const std::vector<JawArc>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a[i].centre_m != b[i].centre_m || a[i].radius_m != b[i].radius_m ||
-        a[i].start_angle_rad != b[i].start_angle_rad || a[i].end_angle_rad != b[i].end_angle_rad ||
-        a[i].pocket != b[i].pocket) {
-      return false;
-    }
-  }
-  return true;
-}
-
-bool sameCaptures(const std::vector<Pocket>& pockets, const std::vector<Circle>& captures) {
-  if (pockets.size() != captures.size()) return false;
-  for (std::size_t i = 0; i < pockets.size(); ++i) {
-    if (pockets[i].capture.centre_m != captures[i].centre_m ||
-        pockets[i].capture.radius_m != captures[i].radius_m) {
-      return false;
-    }
-  }
-  return true;
-}
-
-// geometryOf(table), built again only when the table's cushions, jaws or capture circles differ
-// from the last one's on this thread. Valid until the next call on this thread.
-const TableGeometry& geometryForRun(const Table& table) {
-  thread_local GeometryCache cache;
-  if (!cache.filled || !sameCushions(table.cushions, cache.cushions) ||
-      !sameJaws(table.jaw_arcs, cache.jaws) || !sameCaptures(table.pockets, cache.captures)) {
-    cache.filled = false;  // stays so if building throws
-    cache.geometry = geometryOf(table);
-    cache.cushions = table.cushions;
-    cache.jaws = table.jaw_arcs;
-    cache.captures.clear();
-    for (const Pocket& pocket : table.pockets) cache.captures.push_back(pocket.capture);
-    cache.filled = true;
-  }
-  return cache.geometry;
-}
-
 }  // namespace
 
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
@@ -375,7 +312,7 @@ SceneRun runScene(const Scene& scene, bool record_trajectories) {
   // The event loop's refusals name balls by id; the scene's file is put in front of them.
   const std::string prefix = scene.source.empty() ? "" : scene.source + ": ";
   try {
-    run.result = simulate(params, geometryForRun(scene.table), balls, run.ball_ids);
+    run.result = simulate(params, cachedGeometryOf(scene.table), balls, run.ball_ids);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(prefix + e.what());
   } catch (const BallLeftTableError& e) {

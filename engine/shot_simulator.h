@@ -45,6 +45,11 @@ struct TableGeometry {
 
 // The geometry of a table loaded from engine/table.h, its cushion outline included.
 TableGeometry geometryOf(const Table& table);
+// geometryOf(table), kept for the next call on the same thread and built again only when the
+// table's cushions, jaw arcs or capture circles differ from the kept ones bit for bit: shots run
+// back to back (a bench, a search over many shots, a batch) mostly share one table. The reference
+// holds until the next call on this thread.
+const TableGeometry& cachedGeometryOf(const Table& table);
 
 // A table with a rectangular playing area and no pockets: four cushions, inward normals, and the
 // rectangle as its outline.

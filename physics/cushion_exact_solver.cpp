@@ -332,7 +332,11 @@ class FixedList {
   int size() const { return count_; }
   bool empty() const { return count_ == 0; }
   const T& operator[](int i) const { return begin()[i]; }
-  const T* begin() const { return std::launder(reinterpret_cast<const T*>(storage_)); }
+  // (std::launder only where an item lives: an empty list's storage holds none.)
+  const T* begin() const {
+    const T* first = reinterpret_cast<const T*>(storage_);
+    return count_ > 0 ? std::launder(first) : first;
+  }
   const T* end() const { return begin() + count_; }
 
  private:

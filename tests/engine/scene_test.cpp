@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -654,10 +655,11 @@ TEST(ScenePhysics, BadOverridesAreRefusedNamingFileKeyAndValue) {
 namespace baize::engine {
 namespace {
 
-// runScene keeps the last table's geometry for the next shot on the same thread (engine/scene.cpp).
-// A shot on another table, and one on the first table again, give exactly what each gives on a
-// thread of its own (which starts with none kept): nothing of one table's outline, rail box or
-// pockets reaches a shot on another.
+// runScene keeps the last table's geometry for the next shot on the same thread
+// (cachedGeometryOf). A shot on another table, and one on the first table again, give exactly what
+// each gives on a thread of its own (which starts with none kept): nothing of one table's outline,
+// rail box, jaws or pockets reaches a shot on another. One of the tables differs from the 9 ft one
+// only in its capture circles, which the shot runs into.
 TEST(Scene, ShotsOnDifferentTablesBackToBackGiveWhatEachGivesAlone) {
   auto bankShot = [](const std::string& table) {
     nlohmann::json document = nlohmann::json::parse(R"({"ball_set": "pool",
@@ -666,35 +668,40 @@ TEST(Scene, ShotsOnDifferentTablesBackToBackGiveWhatEachGivesAlone) {
     document["table"] = table;
     return sceneFromJson(document, table + "-bank.json");
   };
-  auto eventTimes = [](const SceneRun& run) {
-    std::vector<double> times;
-    for (const Event& e : run.result.events) times.push_back(e.time_s);
+  Scene wide_captures = bankShot("pool-9ft");
+  for (Pocket& pocket : wide_captures.table.pockets) pocket.capture.radius_m += 0.25;
+  auto outcome = [](const SceneRun& run) {
+    std::vector<double> values;
+    for (const Event& e : run.result.events) values.push_back(e.time_s);
     for (const BallRecord& b : run.result.final_balls) {
-      times.push_back(b.state.position.x());
-      times.push_back(b.state.position.y());
+      values.push_back(b.state.position.x());
+      values.push_back(b.state.position.y());
+      values.push_back(b.pocketed ? 1 : 0);
     }
-    return times;
+    return values;
   };
-  const std::vector<std::string> tables = {"pool-7ft", "pool-9ft", "snooker-12ft", "pool-7ft"};
-  for (const std::string& table : tables) {
-    const Scene scene = bankShot(table);
+  const std::vector<Scene> scenes = {bankShot("pool-7ft"), bankShot("pool-9ft"), wide_captures,
+                                     bankShot("snooker-12ft"), bankShot("pool-9ft")};
+  std::vector<std::vector<double>> alone_outcomes;
+  for (const Scene& scene : scenes) {
     std::vector<double> alone;
-    std::thread([&] { alone = eventTimes(runScene(scene)); }).join();
-    EXPECT_EQ(eventTimes(runScene(scene)), alone) << table << " after another table";
-    EXPECT_EQ(eventTimes(runScene(scene)), alone) << table << " after itself";
-  }
-  // The tables differ where the shot goes: the first cushion is met at different times.
-  std::vector<double> first_cushion;
-  for (const char* table : {"pool-7ft", "pool-9ft"}) {
-    for (const Event& e : runScene(bankShot(table)).result.events) {
-      if (e.kind == EventKind::Cushion) {
-        first_cushion.push_back(e.time_s);
-        break;
+    std::exception_ptr failure;
+    std::thread([&] {
+      try {
+        alone = outcome(runScene(scene));
+      } catch (...) {
+        failure = std::current_exception();
       }
-    }
+    }).join();
+    if (failure) std::rethrow_exception(failure);
+    EXPECT_EQ(outcome(runScene(scene)), alone) << scene.source << " after another table";
+    EXPECT_EQ(outcome(runScene(scene)), alone) << scene.source << " after itself";
+    alone_outcomes.push_back(alone);
   }
-  ASSERT_EQ(first_cushion.size(), 2u);
-  EXPECT_NE(first_cushion[0], first_cushion[1]);
+  // The tables differ where the shot goes, the capture circles alone included.
+  EXPECT_NE(alone_outcomes[0], alone_outcomes[1]);
+  EXPECT_NE(alone_outcomes[1], alone_outcomes[2]);
+  EXPECT_NE(alone_outcomes[2], alone_outcomes[3]);
 }
 
 // Bit-for-bit determinism, pinned: a hash of every event's time and every final state of the

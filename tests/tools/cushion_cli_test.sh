@@ -237,7 +237,7 @@ assert all(float(r["cushion_slip_mps"]) >= 0 and float(r["cloth_slip_mps"]) >= 0
   fail "bench exited $?"
 grep -qF "speed ratio" "$work/bench.out" || fail "bench prints no speed ratio"
 grep -qF "accuracy ratio" "$work/bench.out" || fail "bench prints no accuracy ratio"
-grep -qE "^exact default: [0-9]+\.[0-9] evaluations per impact; 0 of 30 impacts above 5e-10 V0, 0 above the promised 1e-9 V0 \(kept\)$" \
+grep -qE "^exact default: [0-9]+\.[0-9] evaluations per impact; [0-9]+ of 30 impacts above 5e-10 V0, 0 above the promised 1e-9 V0 \(kept\)$" \
   "$work/bench.out" || fail "bench does not report the exact solver's promise: $(grep "exact default" "$work/bench.out")"
 [[ ! -e "$work/bench.csv.tmp" ]] || fail "the bench left its temporary file"
 check_python '
@@ -323,8 +323,32 @@ grep -qF "the spinning set, 30 impacts (seed 1;" "$work/spin_a.out" ||
 grep -qF "mu_w and mu_s drawn per impact" "$work/grippy.out" ||
   fail "the grippy bench does not say its frictions are drawn: $(head -2 "$work/grippy.out")"
 grep -qF "0 above the promised 1e-9 V0 (kept)" "$work/grippy.out" || fail "grippy: promise line"
-grep -qE "^largest error: impact [0-9]+, V0 [0-9.e-]+ m/s, alpha " "$work/spin_a.out" ||
-  fail "the spinning bench does not name its worst impact"
+check_python '
+import re
+# The worst impact is one of the set, drawn as documented: V0 in [0.1, 2.5] m/s, alpha in [1, 179]
+# deg; spinning: spin about each axis in [-3, 3] V0/R, none zero, on the flags cushion; grippy:
+# mu_w in [0, 0.4), mu_s in [0.35, 0.425), topspin in [0.8, 1.05] and no spin about the travel.
+number = r"(-?[0-9.]+(?:e-?[0-9]+)?)"
+pattern = (r"^largest error: impact ([0-9]+), V0 N m/s, alpha N deg, spin \(N, N, N\) V0/R, "
+           r"mu_w N, mu_s N$").replace("N", number)
+def worst(path):
+    with open(path) as f:
+        (line,) = [l.strip() for l in f if l.startswith("largest error")]
+    match = re.match(pattern, line)
+    assert match, line
+    return [float(x) for x in match.groups()]
+i, v0, alpha, sx, sy, sz, mu_w, mu_s = worst(sys.argv[1])
+assert 0 <= i < 30 and 0.1 <= v0 < 2.5 and 1 <= alpha < 179, (i, v0, alpha)
+assert all(0 < abs(x) <= 3 for x in (sx, sy, sz)), (sx, sy, sz)
+assert (mu_w, mu_s) == (0.14, 0.2), (mu_w, mu_s)
+i, v0, alpha, sx, sy, sz, mu_w, mu_s = worst(sys.argv[2])
+assert 0 <= i < 10 and 0.1 <= v0 < 2.5 and 1 <= alpha < 179, (i, v0, alpha)
+assert 0 <= mu_w < 0.4 and 0.35 <= mu_s < 0.425, (mu_w, mu_s)
+assert mu_w != 0.14 and mu_s != 0.212, (mu_w, mu_s)  # drawn, not the default cushion
+# Near-rolling: topspin k in [0.8, 1.05] about the axis along the cushion turned by alpha.
+topspin = math.hypot(sx, sy)
+assert 0.8 - 1e-9 <= topspin <= 1.05 + 1e-9 and abs(sz) <= 1.5, (sx, sy, sz)
+' "$work/spin_a.out" "$work/grippy.out"
 cmp -s "$work/spin_a.csv" "$work/spin_b.csv" || fail "the same seed gave another spinning set"
 check_python '
 header = "set,impacts,evaluations_per_impact,above_half_promise,above_promise,max_error"
@@ -339,8 +363,30 @@ for path, name, n in ((sys.argv[1], "spinning", 30), (sys.argv[3], "grippy", 10)
 (a,) = rows(sys.argv[1]); (c,) = rows(sys.argv[2])
 assert a["max_error"] != c["max_error"], (a, c)
 ' "$work/spin_a.csv" "$work/spin_c.csv" "$work/grippy.csv"
+# The grippy set's worst impact, run again by `baize cushion` as the bench prints it, has exactly
+# the error the bench reports: the bench solved it with that impact's own frictions.
+same_impact=$(sed -n 's/^the same impact: baize //p' "$work/grippy.out")
+[[ -n "$same_impact" ]] || fail "the grippy bench does not print its worst impact as a command"
+# shellcheck disable=SC2086  # the printed flags, split as a shell splits words
+"$baize" $same_impact --json >"$work/worst.json" || fail "baize $same_impact exited $?"
+# shellcheck disable=SC2086
+"$baize" $same_impact --json --tolerance 1e-14 >"$work/worst_ref.json" ||
+  fail "baize $same_impact --tolerance 1e-14 exited $?"
+check_python '
+solved, reference = load(sys.argv[1]), load(sys.argv[2])
+radius, speed = solved["params"]["radius_m"], solved["incoming"]["speed_mps"]
+error = max(max(abs(a - b) for a, b in zip(solved["v"], reference["v"])),
+            radius * max(abs(a - b) for a, b in zip(solved["w"], reference["w"]))) / speed
+(row,) = rows(sys.argv[3])
+assert error == float(row["max_error"]), (error, row["max_error"])
+' "$work/worst.json" "$work/worst_ref.json" "$work/grippy.csv"
 expect_error 2 "--set: foo not in {drawn,spinning,grippy}" bench cushion --set foo
 expect_error 2 "--seed draws the spinning or grippy set" bench cushion --seed 3 --impacts 1
+expect_error 2 "--seed" bench cushion --set spinning --seed -1
+expect_error 2 "the grippy set draws mu_w up to 0.4 and mu_s up to 0.425, which this cushion" \
+  bench cushion --set grippy --mass 0.17 --radius 0.028575 --h 0.03629
+expect_error 2 "--mu-w and --mu-s: the grippy set draws its own" \
+  bench cushion --set grippy --mu-w 0.05
 expect_error 2 "--repeat times the drawn sets; the grippy set is not timed" \
   bench cushion --set grippy --repeat 2
 expect_error 2 "--from-shots excludes --set" bench cushion --set spinning --from-shots 2

@@ -36,6 +36,7 @@ struct BenchFlags {
   std::string set = "drawn";          // drawn (the wide and rolling sets), spinning or grippy
   std::optional<std::uint64_t> seed;  // of the spinning or grippy set
   bool repeat_given = false;          // --repeat on the command line (those sets are not timed)
+  bool frictions_given = false;       // --mu-w or --mu-s (the grippy set draws its own)
 };
 
 std::string csvRow(const BenchRow& row) {
@@ -60,8 +61,7 @@ void printRatio(const std::string& what, double ratio, double target) {
   std::cout << '\n';
 }
 
-// A power-of-ten-like value as people write it: "5e-10", not the stream's "5e-010" or "5e-10"
-// with padding.
+// A small value as people write it: "1e-9", not the stream's "1e-09".
 std::string exponentText(double value) {
   std::ostringstream text;
   text << std::setprecision(3) << value;
@@ -75,14 +75,15 @@ std::string exponentText(double value) {
 }
 
 // The exact solver's promise on the exact default's row (every mode prints it).
+// `impacts`: every impact scored (in the drawn mode, the wide and the rolling set).
 void printPromise(const BenchRow& exact, int impacts) {
-  std::cout << "exact default: " << std::fixed << std::setprecision(1)
-            << exact.evaluations_per_impact << " evaluations per impact; "
-            << exact.above_half_promise << " of " << impacts << " impacts above "
-            << exponentText(0.5 * kExactPromise) << " V0, " << exact.above_promise
-            << " above the promised " << exponentText(kExactPromise) << " V0 ("
-            << (exact.above_promise == 0 ? "kept" : "NOT kept") << ")\n";
-  std::cout.unsetf(std::ios::floatfield);
+  std::ostringstream line;
+  line << "exact default: " << std::fixed << std::setprecision(1) << exact.evaluations_per_impact
+       << " evaluations per impact; " << exact.above_half_promise << " of " << impacts
+       << " impacts above " << exponentText(0.5 * kExactPromise) << " V0, " << exact.above_promise
+       << " above the promised " << exponentText(kExactPromise) << " V0 ("
+       << (exact.above_promise == 0 ? "kept" : "NOT kept") << ")\n";
+  std::cout << line.str();
 }
 
 // --set spinning or grippy: the exact solver at its default against the reference, no timing.
@@ -93,12 +94,18 @@ void runStressSet(const BenchFlags& flags, const physics::CushionParams& params,
   const std::vector<BenchInput> inputs =
       spinning ? spinningBenchInputs(params.radius_m, flags.impacts, seed)
                : grippyBenchInputs(params, flags.impacts, seed);
+  std::ostringstream draws;
+  if (spinning) {
+    draws << "spin about each axis in [" << -kSpinningSpin_k << ", " << kSpinningSpin_k << "] V0/R";
+  } else {
+    draws << "mu_s in [" << kGrippyClothFrictionLow << ", " << kGrippyClothFrictionHigh
+          << "], mu_w in [0, " << kGrippyCushionFrictionHigh << "], topspin in ["
+          << kGrippyTopspinLow_k << ", " << kGrippyTopspinHigh_k << "] V0/R, sidespin in ["
+          << -kGrippySidespin_k << ", " << kGrippySidespin_k << "] V0/R";
+  }
   std::cout << "baize bench cushion: the " << flags.set << " set, " << flags.impacts
             << " impacts (seed " << seed << "; V0 in [0.1, 2.5] m/s, alpha in [1, 179] deg, "
-            << (spinning ? "spin about each axis in [-3, 3] V0/R"
-                         : "mu_s in [0.35, 0.425], mu_w in [0, 0.4], topspin in [0.8, 1.05] "
-                           "V0/R, sidespin in [-1.5, 1.5] V0/R")
-            << "), the exact solver at its default tolerance, not timed\n";
+            << draws.str() << "), the exact solver at its default tolerance, not timed\n";
   std::cout << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
             << physics::valueText(params.radius_m) << " m, h "
             << physics::valueText(params.contact_height_m) << " m, e_e "
@@ -129,6 +136,18 @@ void runStressSet(const BenchFlags& flags, const physics::CushionParams& params,
             << physics::valueText(worst.incoming.w.z() / spin_unit) << ") V0/R, mu_w "
             << physics::valueText(own.cushion_friction) << ", mu_s "
             << physics::valueText(own.cloth_friction) << '\n';
+  if (worst.shot) {  // the same impact, bit for bit, from `baize cushion`
+    std::cout << "the same impact: baize cushion --speed "
+              << physics::valueText(worst.shot->speed_mps) << " --angle "
+              << physics::valueText(worst.shot->angle_deg) << " --topspin "
+              << physics::valueText(worst.shot->topspin_k) << " --sidespin "
+              << physics::valueText(worst.shot->sidespin_k) << " --mass "
+              << physics::valueText(own.mass_kg) << " --radius " << physics::valueText(own.radius_m)
+              << " --h " << physics::valueText(own.contact_height_m) << " --e "
+              << physics::valueText(own.restitution) << " --mu-w "
+              << physics::valueText(own.cushion_friction) << " --mu-s "
+              << physics::valueText(own.cloth_friction) << '\n';
+  }
   std::cout << "reference: exact solver at tolerance " << kReferenceTolerance
             << "; it differs from the solution at tolerance " << kReferenceCheckTolerance
             << " by at most " << std::setprecision(3) << report.reference_check_error
@@ -158,7 +177,21 @@ void runBench(const BenchFlags& flags) {
         "--seed draws the spinning or grippy set (--set spinning or --set grippy); "
         "the drawn sets' seeds are fixed");
   }
+  if (flags.frictions_given && flags.set == "grippy") {
+    throw UsageError("--mu-w and --mu-s: the grippy set draws its own for every impact");
+  }
   physics::CushionParams params = cushionParamsOf(flags.cushion_flags);
+  if (flags.set == "grippy") {
+    try {
+      validateGrippyCushion(params);
+    } catch (const std::invalid_argument& refused) {
+      throw UsageError(
+          std::string("the grippy set draws mu_w up to ") +
+          physics::valueText(kGrippyCushionFrictionHigh) + " and mu_s up to " +
+          physics::valueText(kGrippyClothFrictionHigh) +
+          ", which this cushion (--mass, --radius, --h, --e) does not allow: " + refused.what());
+    }
+  }
   // Opened first, so that an unwritable path fails before the measurement.
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
@@ -172,7 +205,8 @@ void runBench(const BenchFlags& flags) {
     const std::vector<physics::BallVelocity> impacts =
         cushionImpactsOf(randomSingleShots(*flags.from_shots), &params);
     for (const physics::BallVelocity& incoming : impacts) {
-      inputs.push_back({incoming, std::hypot(incoming.v.x(), incoming.v.y()), true, std::nullopt});
+      inputs.push_back(
+          {incoming, std::hypot(incoming.v.x(), incoming.v.y()), true, std::nullopt, std::nullopt});
     }
     if (inputs.empty()) {
       rejectFlag("--from-shots", *flags.from_shots, "those shots meet no cushion; take more");
@@ -234,7 +268,8 @@ void addBenchCushionCommand(CLI::App& bench) {
   CLI::App* command = bench.add_subcommand(
       "cushion",
       "Time the paper and exact cushion solvers and measure their error against a "
-      "converged reference, over one fixed seeded set of impacts (or the impacts of random shots)");
+      "converged reference, over one fixed seeded set of impacts (or the impacts of random shots); "
+      "or check the exact solver's promise alone on a seeded spinning or grippy set");
   command->add_option("--csv", flags->csv_path, "also write the table to this CSV file")
       ->check(notEmpty());
   command->add_option("--impacts", flags->impacts, "impacts in the set (a smoke run can use few)")
@@ -256,15 +291,19 @@ void addBenchCushionCommand(CLI::App& bench) {
                        "promise only, untimed)")
           ->check(CLI::IsMember({"drawn", "spinning", "grippy"}))
           ->capture_default_str();
-  command->add_option(
-      "--seed", flags->seed,
-      "seed of the spinning or grippy set (default " + std::to_string(kDefaultStressSeed) + ")");
+  command
+      ->add_option(
+          "--seed", flags->seed,
+          "seed of the spinning or grippy set (default " + std::to_string(kDefaultStressSeed) + ")")
+      ->check(unsigned64());
   for (const char* name : {"--impacts", "--mass", "--radius", "--h", "--e", "--mu-w", "--mu-s"}) {
     from_shots->excludes(name);
   }
   from_shots->excludes(set);
-  command->callback([flags, repeat] {
+  command->callback([flags, repeat, command] {
     flags->repeat_given = repeat->count() > 0;
+    flags->frictions_given =
+        command->get_option("--mu-w")->count() > 0 || command->get_option("--mu-s")->count() > 0;
     if (const int status = runReportingErrors("bench cushion", [&] { runBench(*flags); })) {
       throw CLI::RuntimeError(status);
     }

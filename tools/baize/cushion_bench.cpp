@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -19,6 +20,10 @@ using Clock = std::chrono::steady_clock;
 constexpr double kMinBatchNs = 20'000;
 constexpr long kMaxBatch = 1'000'000;  // runs per batch, whatever the first run measured
 
+// The share of the promise whose count the bench reports besides the promise's own.
+constexpr double kHalfPromiseShare = 0.5;
+constexpr double kRadiansPerDegree = M_PI / 180;
+
 // Uniform in [lo, hi) from the top 53 bits of one draw: defined here rather than by
 // std::uniform_real_distribution, whose algorithm differs between standard libraries.
 double uniform(std::mt19937_64& generator, double lo, double hi) {
@@ -32,6 +37,8 @@ double impactError(const physics::BallVelocity& ball, const physics::BallVelocit
   const double spin_error = radius_m * (ball.w - reference.w).cwiseAbs().maxCoeff();
   return std::max(velocity_error, spin_error) / speed_mps;
 }
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 double elapsedNs(Clock::time_point start, Clock::time_point end) {
   return std::chrono::duration<double, std::nano>(end - start).count();
@@ -49,11 +56,12 @@ struct BenchImpact {
 
 // Adds one scored impact to the row's error, evaluation and promise tallies (evaluations: the
 // exact solver's rate evaluations, the paper scheme's steps).
+// A NaN error counts as above the promise and becomes the largest (and stays so).
 void tally(const physics::CushionImpactResult& result, double error, BenchRow* row) {
-  row->max_error = std::max(row->max_error, error);
+  if (!std::isnan(row->max_error) && !(error <= row->max_error)) row->max_error = error;
   row->evaluations_per_impact += static_cast<double>(result.rhs_evaluations);
-  row->above_half_promise += error > 0.5 * kExactPromise;
-  row->above_promise += error > kExactPromise;
+  row->above_half_promise += !(error <= kHalfPromiseShare * kExactPromise);
+  row->above_promise += !(error <= kExactPromise);
 }
 
 // The reference outgoing state of an input, and how far the looser check solution lies from it.
@@ -163,7 +171,8 @@ std::vector<BenchInput> seededBenchInputs(double radius_m, int count) {
   std::vector<BenchInput> inputs;
   for (std::size_t i = 0; i < shots.size(); ++i) {
     const bool timed = i < static_cast<std::size_t>(count);
-    inputs.push_back({incomingBallOf(shots[i], radius_m), shots[i].speed_mps, timed, std::nullopt});
+    inputs.push_back(
+        {incomingBallOf(shots[i], radius_m), shots[i].speed_mps, timed, std::nullopt, shots[i]});
   }
   return inputs;
 }
@@ -174,11 +183,12 @@ std::vector<BenchInput> spinningBenchInputs(double radius_m, int count, std::uin
   for (int i = 0; i < count; ++i) {
     BenchInput input;
     input.speed_mps = uniform(generator, 0.1, 2.5);
-    const double alpha_rad = uniform(generator, 1, 179) * M_PI / 180;
+    const double alpha_rad = uniform(generator, 1, 179) * kRadiansPerDegree;
     input.incoming = physics::incomingBall(input.speed_mps, alpha_rad, 0, 0);
     const double spin_unit = input.speed_mps / radius_m;  // V0 / R, rad/s
-    for (int axis = 0; axis < 3; ++axis)
-      input.incoming.w[axis] = uniform(generator, -3, 3) * spin_unit;
+    for (int axis = 0; axis < 3; ++axis) {
+      input.incoming.w[axis] = uniform(generator, -kSpinningSpin_k, kSpinningSpin_k) * spin_unit;
+    }
     input.timed = false;
     inputs.push_back(input);
   }
@@ -191,21 +201,29 @@ std::vector<BenchInput> grippyBenchInputs(const physics::CushionParams& params, 
   std::vector<BenchInput> inputs;
   for (int i = 0; i < count; ++i) {
     physics::CushionParams grippy = params;
-    grippy.cloth_friction = uniform(generator, 0.35, 0.425);
-    grippy.cushion_friction = uniform(generator, 0, 0.4);
+    grippy.cloth_friction = uniform(generator, kGrippyClothFrictionLow, kGrippyClothFrictionHigh);
+    grippy.cushion_friction = uniform(generator, 0, kGrippyCushionFrictionHigh);
     CushionShot shot;
     shot.speed_mps = uniform(generator, 0.1, 2.5);
     shot.angle_deg = uniform(generator, 1, 179);
-    shot.topspin_k = uniform(generator, 0.8, 1.05);
-    shot.sidespin_k = uniform(generator, -1.5, 1.5);
+    shot.topspin_k = uniform(generator, kGrippyTopspinLow_k, kGrippyTopspinHigh_k);
+    shot.sidespin_k = uniform(generator, -kGrippySidespin_k, kGrippySidespin_k);
     BenchInput input;
     input.incoming = incomingBallOf(shot, params.radius_m);
     input.speed_mps = shot.speed_mps;
     input.timed = false;
     input.params = grippy;
+    input.shot = shot;
     inputs.push_back(input);
   }
   return inputs;
+}
+
+void validateGrippyCushion(const physics::CushionParams& params) {
+  physics::CushionParams grippiest = params;
+  grippiest.cloth_friction = kGrippyClothFrictionHigh;
+  grippiest.cushion_friction = kGrippyCushionFrictionHigh;
+  physics::validateCushionParams(grippiest);
 }
 
 PromiseReport scorePromise(const physics::CushionParams& params,
@@ -219,8 +237,9 @@ PromiseReport scorePromise(const physics::CushionParams& params,
     const physics::CushionImpactResult result =
         solveCushionShot(own, inputs[i].incoming, exact_default);
     const double error = impactError(result.after, reference, own.radius_m, inputs[i].speed_mps);
-    if (error > report.row.max_error) report.worst = i;
+    const double largest_before = report.row.max_error;
     tally(result, error, &report.row);
+    if (!sameBits(report.row.max_error, largest_before)) report.worst = i;
   }
   report.row.evaluations_per_impact /= static_cast<double>(std::max<std::size_t>(1, inputs.size()));
   return report;

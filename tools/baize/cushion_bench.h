@@ -69,6 +69,7 @@ struct BenchInput {
   double speed_mps = 0;
   bool timed = true;
   std::optional<physics::CushionParams> params;  // its own cushion and cloth, else the bench's
+  std::optional<CushionShot> shot;  // the shot it was made from, where `baize cushion` can run it
 };
 
 // The seeded sets: benchShots(count), timed, then rollingBenchShots(rollingBenchCount(count)).
@@ -76,16 +77,26 @@ std::vector<BenchInput> seededBenchInputs(double radius_m, int count);
 
 // The spinning set, to check the exact solver's promise on spins the other sets never draw: V0
 // uniform in [0.1, 2.5] m/s, alpha in [1, 179] deg, and the spin about each of the three axes
-// uniform in [-3, 3] V0/R on its own (so also spin about the line of travel), drawn as the sets
-// above from std::mt19937_64 seeded with `seed`. None is timed.
+// uniform in [-kSpinningSpin_k, kSpinningSpin_k] V0/R on its own (so also spin about the line of
+// travel), drawn as the sets above from std::mt19937_64 seeded with `seed`. None is timed.
+constexpr double kSpinningSpin_k = 3;
 std::vector<BenchInput> spinningBenchInputs(double radius_m, int count, std::uint64_t seed);
 
 // The grippy set, contacts much grippier than real cushions and cloth: each impact has its own
-// mu_s uniform in [0.35, 0.425] and mu_w in [0, 0.4] (the rest is `params`), and a near-rolling
-// ball: V0 in [0.1, 2.5] m/s, alpha in [1, 179] deg, topspin k in [0.8, 1.05], sidespin k in
-// [-1.5, 1.5]; drawn as above from `seed`. None is timed.
+// mu_s uniform in [kGrippyClothFrictionLow, kGrippyClothFrictionHigh) and mu_w in
+// [0, kGrippyCushionFrictionHigh) (the rest is `params`), and a near-rolling ball: V0 in
+// [0.1, 2.5] m/s, alpha in [1, 179] deg, topspin k in [0.8, 1.05], sidespin k in
+// [-kGrippySidespin_k, kGrippySidespin_k]; drawn as above from `seed`. None is timed.
+constexpr double kGrippyClothFrictionLow = 0.35, kGrippyClothFrictionHigh = 0.425;
+constexpr double kGrippyCushionFrictionHigh = 0.4;
+constexpr double kGrippyTopspinLow_k = 0.8, kGrippyTopspinHigh_k = 1.05;
+constexpr double kGrippySidespin_k = 1.5;
 std::vector<BenchInput> grippyBenchInputs(const physics::CushionParams& params, int count,
                                           std::uint64_t seed);
+// Whether `params` allows every friction the grippy set draws: the cushion model's limits on mu_w
+// and mu_s (physics::validateCushionParams) only tighten as either grows, so the largest pair
+// stands for all. Throws std::invalid_argument with the model's refusal otherwise.
+void validateGrippyCushion(const physics::CushionParams& params);
 
 // The exact solver at its default tolerance over the inputs, scored against the reference (each
 // input with its own cushion where it has one): what its promise is checked on.
