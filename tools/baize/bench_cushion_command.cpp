@@ -24,8 +24,10 @@ constexpr int kDefaultPasses = 3;    // timed passes over the set; each impact k
 constexpr double kSpeedTarget = 20;  // exact default at least 20x faster than paper N=5000
 constexpr double kAccuracyTarget = 1000;  // and at least 1000x more accurate
 
+constexpr double kDegreesPerRadian = 180 / M_PI;
+
 // The spinning and grippy sets' seed unless --seed gives another.
-constexpr std::uint64_t kDefaultStressSeed = 1;
+constexpr std::uint64_t kDefaultPromiseSetSeed = 1;
 
 struct BenchFlags {
   std::string csv_path;
@@ -80,16 +82,16 @@ void printPromise(const BenchRow& exact, int impacts) {
   std::ostringstream line;
   line << "exact default: " << std::fixed << std::setprecision(1) << exact.evaluations_per_impact
        << " evaluations per impact; " << exact.above_half_promise << " of " << impacts
-       << " impacts above " << exponentText(0.5 * kExactPromise) << " V0, " << exact.above_promise
-       << " above the promised " << exponentText(kExactPromise) << " V0 ("
+       << " impacts above " << exponentText(kHalfPromiseShare * kExactPromise) << " V0, "
+       << exact.above_promise << " above the promised " << exponentText(kExactPromise) << " V0 ("
        << (exact.above_promise == 0 ? "kept" : "NOT kept") << ")\n";
   std::cout << line.str();
 }
 
 // --set spinning or grippy: the exact solver at its default against the reference, no timing.
-void runStressSet(const BenchFlags& flags, const physics::CushionParams& params,
-                  std::optional<AtomicFile>* csv) {
-  const std::uint64_t seed = flags.seed.value_or(kDefaultStressSeed);
+void runPromiseSet(const BenchFlags& flags, const physics::CushionParams& params,
+                   std::optional<AtomicFile>* csv) {
+  const std::uint64_t seed = flags.seed.value_or(kDefaultPromiseSetSeed);
   const bool spinning = flags.set == "spinning";
   const std::vector<BenchInput> inputs =
       spinning ? spinningBenchInputs(params.radius_m, flags.impacts, seed)
@@ -129,8 +131,8 @@ void runStressSet(const BenchFlags& flags, const physics::CushionParams& params,
   const double spin_unit = worst.speed_mps / own.radius_m;  // V0 / R
   std::cout << "largest error: impact " << report.worst << ", V0 "
             << physics::valueText(worst.speed_mps) << " m/s, alpha "
-            << physics::valueText(std::atan2(worst.incoming.v.y(), worst.incoming.v.x()) * 180 /
-                                  M_PI)
+            << physics::valueText(std::atan2(worst.incoming.v.y(), worst.incoming.v.x()) *
+                                  kDegreesPerRadian)
             << " deg, spin (" << physics::valueText(worst.incoming.w.x() / spin_unit) << ", "
             << physics::valueText(worst.incoming.w.y() / spin_unit) << ", "
             << physics::valueText(worst.incoming.w.z() / spin_unit) << ") V0/R, mu_w "
@@ -196,7 +198,7 @@ void runBench(const BenchFlags& flags) {
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
   if (flags.set != "drawn") {
-    runStressSet(flags, params, &csv);
+    runPromiseSet(flags, params, &csv);
     return;
   }
 
@@ -292,9 +294,9 @@ void addBenchCushionCommand(CLI::App& bench) {
           ->check(CLI::IsMember({"drawn", "spinning", "grippy"}))
           ->capture_default_str();
   command
-      ->add_option(
-          "--seed", flags->seed,
-          "seed of the spinning or grippy set (default " + std::to_string(kDefaultStressSeed) + ")")
+      ->add_option("--seed", flags->seed,
+                   "seed of the spinning or grippy set (default " +
+                       std::to_string(kDefaultPromiseSetSeed) + ")")
       ->check(unsigned64());
   for (const char* name : {"--impacts", "--mass", "--radius", "--h", "--e", "--mu-w", "--mu-s"}) {
     from_shots->excludes(name);

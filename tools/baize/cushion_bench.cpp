@@ -20,8 +20,6 @@ using Clock = std::chrono::steady_clock;
 constexpr double kMinBatchNs = 20'000;
 constexpr long kMaxBatch = 1'000'000;  // runs per batch, whatever the first run measured
 
-// The share of the promise whose count the bench reports besides the promise's own.
-constexpr double kHalfPromiseShare = 0.5;
 constexpr double kRadiansPerDegree = M_PI / 180;
 
 // Uniform in [lo, hi) from the top 53 bits of one draw: defined here rather than by

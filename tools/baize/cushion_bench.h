@@ -44,6 +44,9 @@ std::vector<SolverSetting> benchSettings();
 // The exact solver's promise: at its default tolerance, each outgoing velocity within this of the
 // converged solution, in units of V0 (physics/cushion_exact_solver.h).
 constexpr double kExactPromise = 1e-9;
+// The share of the promise whose count the bench reports besides the promise's own: how close to it
+// the impacts come.
+constexpr double kHalfPromiseShare = 0.5;
 
 struct BenchRow {
   SolverSetting setting;
