@@ -63,6 +63,26 @@ void printRatio(const std::string& what, double ratio, double target) {
   std::cout << '\n';
 }
 
+// The cushion in use, as every mode names it before its measurement (`frictions_drawn`: the grippy
+// set's, drawn per impact).
+void printCushion(const physics::CushionParams& params, bool frictions_drawn) {
+  std::cout << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
+            << physics::valueText(params.radius_m) << " m, h "
+            << physics::valueText(params.contact_height_m) << " m, e_e "
+            << physics::valueText(params.restitution)
+            << (frictions_drawn ? std::string(", mu_w and mu_s drawn per impact")
+                                : ", mu_w " + physics::valueText(params.cushion_friction) +
+                                      ", mu_s " + physics::valueText(params.cloth_friction))
+            << '\n';
+}
+
+// How far the reference lies from the solution at the looser check tolerance.
+void printReferenceCheck(double check_error) {
+  std::cout << "reference: exact solver at tolerance " << kReferenceTolerance
+            << "; it differs from the solution at tolerance " << kReferenceCheckTolerance
+            << " by at most " << std::setprecision(3) << check_error << " (same error measure)\n";
+}
+
 // A small value as people write it: "1e-9", not the stream's "1e-09".
 std::string exponentText(double value) {
   std::ostringstream text;
@@ -108,14 +128,7 @@ void runPromiseSet(const BenchFlags& flags, const physics::CushionParams& params
   std::cout << "baize bench cushion: the " << flags.set << " set, " << flags.impacts
             << " impacts (seed " << seed << "; V0 in [0.1, 2.5] m/s, alpha in [1, 179] deg, "
             << draws.str() << "), the exact solver at its default tolerance, not timed\n";
-  std::cout << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
-            << physics::valueText(params.radius_m) << " m, h "
-            << physics::valueText(params.contact_height_m) << " m, e_e "
-            << physics::valueText(params.restitution)
-            << (spinning ? ", mu_w " + physics::valueText(params.cushion_friction) + ", mu_s " +
-                               physics::valueText(params.cloth_friction)
-                         : std::string(", mu_w and mu_s drawn per impact"))
-            << '\n';
+  printCushion(params, /*frictions_drawn=*/!spinning);
   const PromiseReport report = scorePromise(params, inputs);
   const std::string header =
       "set,impacts,evaluations_per_impact,above_half_promise,"
@@ -150,10 +163,7 @@ void runPromiseSet(const BenchFlags& flags, const physics::CushionParams& params
               << physics::valueText(own.cushion_friction) << " --mu-s "
               << physics::valueText(own.cloth_friction) << '\n';
   }
-  std::cout << "reference: exact solver at tolerance " << kReferenceTolerance
-            << "; it differs from the solution at tolerance " << kReferenceCheckTolerance
-            << " by at most " << std::setprecision(3) << report.reference_check_error
-            << " (same error measure)\n";
+  printReferenceCheck(report.reference_check_error);
   if (*csv) {
     (*csv)->stream() << header << '\n' << row.str() << '\n';
     (*csv)->commit();
@@ -224,12 +234,7 @@ void runBench(const BenchFlags& flags) {
               << "sidespin in [-3, 3] V0/R), best time of " << flags.passes
               << " timed passes per impact\n";
   }
-  std::cout << "cushion: M " << physics::valueText(params.mass_kg) << " kg, R "
-            << physics::valueText(params.radius_m) << " m, h "
-            << physics::valueText(params.contact_height_m) << " m, e_e "
-            << physics::valueText(params.restitution) << ", mu_w "
-            << physics::valueText(params.cushion_friction) << ", mu_s "
-            << physics::valueText(params.cloth_friction) << '\n';
+  printCushion(params, /*frictions_drawn=*/false);
   const std::string header = "solver,setting,median_ns,max_error";
   bool header_printed = false;
   const BenchReport report =
@@ -240,10 +245,7 @@ void runBench(const BenchFlags& flags) {
         }
         std::cout << csvRow(row) << std::endl;  // flushed: the bench takes a while
       });
-  std::cout << "reference: exact solver at tolerance " << kReferenceTolerance
-            << "; it differs from the solution at tolerance " << kReferenceCheckTolerance
-            << " by at most " << std::setprecision(3) << report.reference_check_error
-            << " (same error measure)\n";
+  printReferenceCheck(report.reference_check_error);
 
   const BenchRow& paper = rowLabelled(report, SolverKind::Paper, "N=5000");
   const BenchRow& exact = rowLabelled(report, SolverKind::Exact, "default");
