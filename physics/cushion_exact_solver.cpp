@@ -231,6 +231,14 @@ constexpr double kStepMaxFactor = 3.0;
 constexpr double kErrorOrder = 8;
 // First step as a fraction of M v_y0, the scale of the whole normal impulse.
 constexpr double kFirstStepFraction = 0.2;
+// After a contact changes its law (held, released, stuck, slipping again) the next step covers at
+// least this fraction of the first step's impulse: the step before was sized for the law that
+// ended, often cut short to land on the change (to 1e-9 of the impulse where an approaching slip
+// was landed on), and the controller grew it back threefold per step (kStepMaxFactor: 15 steps in
+// one stick-slip impact of play). The step's bounds and the error control then apply as to any
+// step. 1, 0.1 and 0.01 gave 381.0, 380.2 and 381.0 evaluations per impact of play (384.9
+// without), the largest error at most 3.3e-10 V0 at each.
+constexpr double kRestartStepFraction = 0.1;
 // The slip rate counts as affine in the friction direction when r(-x) misses r0 - W x by at most
 // this fraction of the rates' size (rounding), and vanishes along a direction (the cone's edge)
 // when it is that small there; a closed-form root of phi*'s equation is kept when its residual is
@@ -1373,13 +1381,22 @@ class ExactImpact {
     return step;
   }
 
+  // The shortest step (tau) after a contact changes its law, at rate k1 (kRestartStepFraction); 0
+  // where the rate does not advance P.
+  double restartStep(const State& k1) const {
+    return k1[kP] > 0 ? kRestartStepFraction * kFirstStepFraction * M_ * vy0_ / k1[kP] : 0.0;
+  }
+
   // The longest step (tau) that spans kTurningScaleSteps of each slipping contact's turning scale
-  // |u| / |du/dtau| at rate k1 (an approaching slip falls along its line and is landed on instead).
+  // |u| / |du/dtau| at rate k1. An approaching slip falls along its line and is landed on instead;
+  // a receding one grows away from the zero that sets its turning scale, which lies behind the
+  // step (without that cap for it: 381.4 evaluations per impact of play instead of 384.9, the
+  // largest error 3.5e-10 V0 instead of 3.3e-10; the spinning and grippy sets the same).
   double turningScaleStep(const std::array<Eigen::Vector2d, 2>& u, const State& k1) const {
     const std::array<Eigen::Vector2d, 2> change = slipChanges(k1);
     double step = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 2; ++k) {
-      if (!slipping(k) || contacts_[k].approaching) continue;
+      if (!slipping(k) || contacts_[k].approaching || contacts_[k].receding) continue;
       const double speed = change[k].norm();
       if (speed > 0) step = std::min(step, kTurningScaleSteps * u[k].norm() / speed);
     }
@@ -1996,6 +2013,7 @@ CushionImpactResult ExactImpact::run() {
       previous_error_ = 0;
       missed_landings_ = 0;
       k1 = rate(z);
+      h = std::max(h, restartStep(k1));
       updateSlipsRunInP(z, slips(z), &k1, &h);  // judged again under the new laws
       continue;
     }
@@ -2179,6 +2197,7 @@ CushionImpactResult ExactImpact::run() {
     reportModes(z);
     if (tracing && length > 0) sample(z);
     k1 = rate(z);
+    if (contact_events) h = std::max(h, restartStep(k1));
     updateSlipsRunInP(z, slips(z), &k1, &h);
     if (!phase_ends) continue;
     if (!compressing_) {

@@ -20,7 +20,7 @@ struct ExactSolverOptions {
   // seeded impacts of `baize bench cushion --impacts 8000` (wide and rolling sets) the largest
   // error is 1.9e-10 V0 on the paper's snooker cushion and 4.95e-10 V0 on the 9 ft pool table's
   // (tests and the bench check it on smaller sets); over the 16,180 impacts of 5000 random single
-  // shots (`baize bench cushion --from-shots 5000`) it is 3.3e-10 V0.
+  // shots (`baize bench cushion --from-shots 5000`) it is 3.5e-10 V0.
   double tolerance = 3e-11;
   // > 0: record result.trace with samples at least this dense in P (N s), plus every step and
   // event.
