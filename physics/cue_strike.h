@@ -43,7 +43,7 @@ constexpr double kMiscueOffsetLimit = 0.5;
 // Fastest cue speed V accepted from input (scenes), m/s. The fastest break shots measured send the
 // cue ball off at about 12-14 m/s; a level centre hit sends it off at up to about 1.33 V (pool
 // ball, the default 0.54 kg cue with e_tip 0.75), so 12.3 m/s reaches about 16 m/s: above any
-// measured break, and the fastest ball speed the stress program (tools/baize/stress_shots.cpp)
+// measured break, and the fastest ball speed the stress program (engine/play/stress_shots.cpp)
 // checks the engine at, which also strikes its cue shots at up to this speed. The strike itself
 // holds at any speed (validateCueShot does not check this bound): noise added to a shot may exceed
 // it slightly.

@@ -16,7 +16,7 @@
 
 namespace baize::physics {
 
-// Constants of one impact; they never change while it runs. Defaults: the seed paper's snooker
+// Constants of one impact; they never change while it runs. Defaults: the Mathavan 2010 paper's snooker
 // values.
 struct CushionParams {
   double mass_kg = 0.1406;
@@ -73,7 +73,7 @@ struct BallVelocity {
 };
 
 // The incoming ball of the paper's Fig. 2, with the spins assigned the physically right way round
-// (the seed text prints them swapped): v = V0 (cos a, sin a, 0), w = (-wT sin a, wT cos a, wS).
+// (the Mathavan 2010 text prints them swapped): v = V0 (cos a, sin a, 0), w = (-wT sin a, wT cos a, wS).
 // alpha is measured from the cushion line (pi/2 is head-on); topspin wT = V0/R is natural roll;
 // positive sidespin is counter-clockwise seen from above.
 BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_radps,

@@ -1,4 +1,4 @@
-// The simplest ball-cushion rule, kept to compare against the seed model (cushion_exact_solver.h):
+// The simplest ball-cushion rule, kept to compare against the Mathavan 2010 model (cushion_exact_solver.h):
 // the velocity component into the cushion reverses and is scaled by a restitution e; the component
 // along the cushion and the whole angular velocity are kept. No friction acts at the nose or on the
 // cloth, so the rebound angle does not depend on spin and sidespin does not throw the ball; the

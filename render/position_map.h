@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/table.h"
+#include "engine/io/table.h"
 #include "render/draw_items.h"
 
 namespace baize::render {

@@ -6,7 +6,7 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "engine/json_reader.h"
+#include "engine/io/json_reader.h"
 #include "physics/cloth_motion.h"
 #include "physics/value_text.h"
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "engine/ball_set.h"
-#include "engine/scene.h"
-#include "engine/shot_simulator.h"
-#include "engine/table.h"
+#include "engine/io/ball_set.h"
+#include "engine/io/scene.h"
+#include "engine/sim/shot_simulator.h"
+#include "engine/io/table.h"
 #include "physics/cloth_motion.h"
 
 namespace baize::render {

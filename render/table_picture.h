@@ -1,12 +1,12 @@
 // A table as a player sees it from above, as draw items (render/draw_items.h): the wooden rail,
 // the cushion rubber, the pocket holes, the cloth bounded by the real cushion outline (rails,
-// jaws and facings from engine/table.h), diamonds and spots on pool tables, the baulk line, the D
+// jaws and facings from engine/io/table.h), diamonds and spots on pool tables, the baulk line, the D
 // and the spots on snooker tables.
 #pragma once
 
 #include <vector>
 
-#include "engine/table.h"
+#include "engine/io/table.h"
 #include "render/draw_items.h"
 
 namespace baize::render {

@@ -103,7 +103,7 @@ def r4(x):
 # direction, the spin turning at 5 mu_s g / 2R; rolling: mu_r g along the velocity) between rails;
 # at a rail the simple rule of docs/scenes.md (the normal velocity reverses times 0.91, the measured
 # head-on slope; the velocity along the rail and the spin are kept). This is the naive player's
-# model of a rail; the simulator uses the seed's cushion model, which also turns the ball by the
+# model of a rail; the simulator uses the Mathavan 2010 cushion model, which also turns the ball by the
 # friction at the nose (docs/positional.md compares the two).
 RAIL_RESTITUTION = 0.91
 

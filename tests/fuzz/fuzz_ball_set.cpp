@@ -9,7 +9,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "engine/ball_set.h"
+#include "engine/io/ball_set.h"
 #include "tests/fuzz/fuzz_json.h"
 #include "tests/fuzz/fuzz_support.h"
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/json_reader.h"
+#include "engine/io/json_reader.h"
 
 namespace baize::fuzz {
 

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/scene.h"
+#include "engine/io/scene.h"
 #include "tests/fuzz/fuzz_json.h"
 #include "tests/fuzz/fuzz_support.h"
 
@@ -83,7 +83,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The paper's Euler scheme at few steps may add energy at a cushion (first order:
     // docs/cushion.md); the other models may not.
     const bool euler_cushion =
-        params.cushion_model == engine::CushionModelChoice::SeedPaper &&
+        params.cushion_model == engine::CushionModelChoice::Mathavan2010Paper &&
         (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw);
     fuzz::check(
         euler_cushion || after <= before * (1 + kEnergyRelativeTolerance) + kEnergyFloor_Jpkg,

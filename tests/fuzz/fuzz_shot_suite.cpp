@@ -16,8 +16,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/shot_outcome.h"
-#include "engine/shot_suite.h"
+#include "engine/play/shot_outcome.h"
+#include "engine/play/shot_suite.h"
 #include "tests/fuzz/fuzz_json.h"
 #include "tests/fuzz/fuzz_support.h"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/shot_simulator.h"
+#include "engine/sim/shot_simulator.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {
@@ -97,7 +97,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The paper's Euler scheme at a few hundred steps may add energy at a cushion (first order:
     // docs/cushion.md); the other models may not.
     const bool euler_cushion =
-        p.cushion_model == engine::CushionModelChoice::SeedPaper &&
+        p.cushion_model == engine::CushionModelChoice::Mathavan2010Paper &&
         (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw);
     check(euler_cushion || after <= before * (1 + kEnergyRelativeTolerance) + kEnergyFloor_Jpkg,
           std::string("energy grew at a ") + engine::eventKindName(e.kind) +

@@ -356,7 +356,7 @@ TEST(CushionPaperSolver, EulerTrajectoryWithLocatedStopsHalvesItsErrorWithItsSte
 // --- 8. the publication's head-on rolling rebound
 // -------------------------------------------------
 
-// The seed's setting N = 5000 reproduces the model's head-on rolling ratio of about 0.91
+// The paper's setting N = 5000 reproduces the model's head-on rolling ratio of about 0.91
 // (physics-notes section 1: 0.818 is a fit over speeds where the rigid model fails).
 constexpr double kHeadOnRatioLow = 0.89;
 constexpr double kHeadOnRatioHigh = 0.93;

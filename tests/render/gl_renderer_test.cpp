@@ -5,7 +5,7 @@
 #include <cmath>
 #include <set>
 
-#include "engine/scene.h"
+#include "engine/io/scene.h"
 #include "render/camera.h"
 #include "render/shot_picture.h"
 #include "render/table_picture.h"

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "engine/table.h"
+#include "engine/io/table.h"
 #include "render/table_picture.h"
 
 namespace baize::render {

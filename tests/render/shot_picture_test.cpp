@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "engine/scene.h"
+#include "engine/io/scene.h"
 #include "render/table_picture.h"
 
 namespace baize::render {

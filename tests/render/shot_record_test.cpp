@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "engine/scene_physics.h"
+#include "engine/io/scene_physics.h"
 
 namespace baize::render {
 namespace {

@@ -130,7 +130,7 @@ grep -q "passed every check" "$work/r.txt" || fail "a ball in the mouth: $(cat "
 
 # A table whose corner capture circles are too small to cover the pocket openings: a ball could
 # pass the facings' ends unpocketed, so the escape check cannot work there; the engine refuses the
-# scene's table (engine/table.h, checkCapturesCoverOpenings).
+# scene's table (engine/io/table.h, checkCapturesCoverOpenings).
 python3 - "$work" "$(dirname "$0")/../../assets/tables/pool-9ft.json" <<'EOF_PY'
 import json, sys
 table = json.load(open(sys.argv[2]))

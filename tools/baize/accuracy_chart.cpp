@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "tools/baize/csv_table.h"
+#include "engine/io/csv_table.h"
 #include "tools/baize/labelled_series.h"
 
 namespace baize::tools {

@@ -10,11 +10,11 @@
 #include <thread>
 #include <vector>
 
-#include "engine/cushion_solve_ahead.h"
-#include "engine/json_reader.h"
-#include "engine/scene.h"
-#include "engine/shot_outcome.h"
-#include "engine/shot_suite.h"
+#include "engine/sim/cushion_solve_ahead.h"
+#include "engine/io/json_reader.h"
+#include "engine/io/scene.h"
+#include "engine/play/shot_outcome.h"
+#include "engine/play/shot_suite.h"
 #include "tools/baize/cli_errors.h"
 
 namespace baize::tools {

@@ -14,14 +14,14 @@
 #include <set>
 #include <sstream>
 
-#include "engine/cushion_solve_ahead.h"
-#include "engine/fixed_step_simulator.h"
-#include "engine/scene.h"
+#include "engine/sim/cushion_solve_ahead.h"
+#include "engine/baselines/fixed_step_simulator.h"
+#include "engine/io/scene.h"
 #include "tools/baize/atomic_file.h"
-#include "tools/baize/box2d_pool.h"
+#include "engine/baselines/box2d_pool.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/median.h"
-#include "tools/baize/random_shots.h"
+#include "engine/play/random_shots.h"
 
 namespace baize::tools {
 namespace {
@@ -228,7 +228,7 @@ std::vector<Configuration> configurations() {
   std::vector<Configuration> list;
   list.push_back({"event", "exact",
                   [](const Shot& s) { return engine::simulate(s.params, s.table, s.balls); }});
-  // The event loop with the seed's cushion model solved to looser tolerances (the setting names
+  // The event loop with the Mathavan 2010 cushion model solved to looser tolerances (the setting names
   // them as `baize bench cushion` does): what accuracy of each impact buys in whole shots.
   for (const double tolerance : kLooserCushionTolerances) {
     std::ostringstream setting;
@@ -266,7 +266,7 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
   // Every engine on one core, so that the times compare like with like (the event loop's helper,
-  // engine/cushion_solve_ahead.h, would give it a second one).
+  // engine/sim/cushion_solve_ahead.h, would give it a second one).
   engine::CushionSolveAhead::setEnabled(false);
   std::vector<Shot> shots = shotSet();
   if (flags.shots > 0 && flags.shots < static_cast<int>(shots.size())) shots.resize(flags.shots);

@@ -15,7 +15,7 @@
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_bench.h"
 #include "tools/baize/cushion_param_flags.h"
-#include "tools/baize/random_shots.h"
+#include "engine/play/random_shots.h"
 
 namespace baize::tools {
 namespace {

@@ -8,7 +8,7 @@
 #include <iostream>
 #include <memory>
 
-#include "engine/table.h"
+#include "engine/io/table.h"
 #include "render/camera.h"
 #include "render/gl_renderer.h"
 #include "render/osmesa_context.h"

@@ -11,13 +11,13 @@
 #include <optional>
 #include <sstream>
 
-#include "engine/cushion_solve_ahead.h"
-#include "engine/scene.h"
+#include "engine/sim/cushion_solve_ahead.h"
+#include "engine/io/scene.h"
 #include "physics/cushion_exact_solver.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/median.h"
-#include "tools/baize/random_shots.h"
+#include "engine/play/random_shots.h"
 
 namespace baize::tools {
 namespace {
@@ -41,7 +41,7 @@ struct HelperTally {
 };
 
 // One run of `scene` (wall time in microseconds), with or without the helper that solves cushion
-// impacts ahead on a second core (engine/cushion_solve_ahead.h).
+// impacts ahead on a second core (engine/sim/cushion_solve_ahead.h).
 double timedRun(const engine::Scene& scene, bool helper, std::size_t* events, HelperTally* tally) {
   engine::CushionSolveAhead::setEnabled(helper);
   const long taken_before = engine::CushionSolveAhead::impactsTakenAhead();

@@ -10,7 +10,7 @@
 #include <memory>
 #include <sstream>
 
-#include "engine/shot_suite.h"
+#include "engine/play/shot_suite.h"
 #include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "tools/baize/csv_table.h"
+#include "engine/io/csv_table.h"
 #include "tools/baize/labelled_series.h"
 
 namespace baize::tools {

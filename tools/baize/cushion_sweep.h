@@ -1,4 +1,4 @@
-// The data behind the seed paper's figures 6, 7, 8 and 10, as CSV files for later charts:
+// The data behind the Mathavan 2010 paper's figures 6, 7, 8 and 10, as CSV files for later charts:
 //   fig6.csv   rebound speed and angle against alpha for several speeds, rolling, no side;
 //   fig7.csv   the same for several topspins at V0 = 1 m/s, no side;
 //   fig8.csv   the same for several sidespins at V0 = 1 m/s, rolling;

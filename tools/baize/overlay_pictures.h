@@ -6,9 +6,9 @@
 #include <memory>
 #include <string>
 
-#include "engine/scene.h"
-#include "engine/shot_outcome.h"
-#include "engine/shot_suite.h"
+#include "engine/io/scene.h"
+#include "engine/play/shot_outcome.h"
+#include "engine/play/shot_suite.h"
 #include "render/draw_items.h"
 
 namespace baize::tools {

@@ -8,8 +8,8 @@
 #include <memory>
 #include <sstream>
 
-#include "engine/shot_planner.h"
-#include "engine/shot_suite.h"
+#include "engine/play/shot_planner.h"
+#include "engine/play/shot_suite.h"
 #include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
@@ -22,7 +22,7 @@ constexpr double kDegToRad = M_PI / 180;
 // Fresh samples per reported shot allowed: a bound that keeps a typo from running for hours.
 constexpr int kMaxNoiseSamples = 1000000;
 constexpr long kMaxBudget = 100000000;  // shots; likewise
-// The re-estimates use streams apart from the search's (engine/shot_planner.cpp uses up to 2^33).
+// The re-estimates use streams apart from the search's (engine/play/shot_planner.cpp uses up to 2^33).
 constexpr std::uint64_t kFreshStreamBase = 1ull << 40;
 
 struct PlanFlags {

@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "engine/scene.h"
-#include "engine/shot_outcome.h"
-#include "engine/table.h"
+#include "engine/io/scene.h"
+#include "engine/play/shot_outcome.h"
+#include "engine/io/table.h"
 #include "render/shot_record.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"

@@ -18,14 +18,14 @@
 #include <thread>
 #include <vector>
 
-#include "engine/cushion_solve_ahead.h"
-#include "engine/json_reader.h"
-#include "engine/scene.h"
+#include "engine/sim/cushion_solve_ahead.h"
+#include "engine/io/json_reader.h"
+#include "engine/io/scene.h"
 #include "physics/cue_strike.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
-#include "tools/baize/stress_checks.h"
-#include "tools/baize/stress_shots.h"
+#include "engine/play/stress_checks.h"
+#include "engine/play/stress_shots.h"
 
 namespace baize::tools {
 namespace {

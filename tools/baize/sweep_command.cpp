@@ -10,10 +10,10 @@
 #include <optional>
 #include <sstream>
 
-#include "engine/execution_noise.h"
-#include "engine/scene.h"
-#include "engine/shot_outcome.h"
-#include "engine/shot_suite.h"
+#include "engine/play/execution_noise.h"
+#include "engine/io/scene.h"
+#include "engine/play/shot_outcome.h"
+#include "engine/play/shot_suite.h"
 #include "physics/cue_strike.h"
 #include "physics/value_text.h"
 #include "render/position_map.h"
@@ -160,7 +160,7 @@ Axis parseAxis(const std::string& spec) {
       !std::isfinite(axis.step) || axis.stop < axis.start) {
     return reject("it needs finite numbers with START <= STOP and STEP > 0");
   }
-  // The bounds a scene's shot has (engine/scene.cpp), which the grid's shots bypass otherwise.
+  // The bounds a scene's shot has (engine/io/scene.cpp), which the grid's shots bypass otherwise.
   if (axis.name == "speed" && !(axis.start > 0 && axis.stop <= physics::kMaxCueSpeed_mps)) {
     return reject("speeds must lie in (0, " + physics::valueText(physics::kMaxCueSpeed_mps) +
                   "] m/s, as a scene's");

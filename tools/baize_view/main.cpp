@@ -12,8 +12,8 @@
 #include <optional>
 #include <sstream>
 
-#include "engine/json_reader.h"
-#include "engine/scene.h"
+#include "engine/io/json_reader.h"
+#include "engine/io/scene.h"
 #include "render/camera.h"
 #include "render/gl_renderer.h"
 #include "render/png_writer.h"

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "engine/scene.h"
+#include "engine/io/scene.h"
 #include "render/shot_record.h"
 
 namespace baize::tools {

@@ -1,0 +1,57 @@
+// A scene: a table, a ball set, where the balls stand and the shot, read from a JSON file
+// (docs/scenes.md), and its simulation through the event loop.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "engine/io/ball_set.h"
+#include "engine/io/rack.h"
+#include "engine/io/scene_physics.h"
+#include "engine/sim/shot_simulator.h"
+#include "engine/io/table.h"
+#include "physics/cue_strike.h"
+
+namespace baize::engine {
+
+struct Scene {
+  std::string source;  // the file it came from, for messages
+  Table table;
+  BallSet ball_set;
+  std::vector<PlacedBall> balls;  // the cue ball first
+  std::string cue_ball;           // the ball the cue strikes
+  physics::CueShot shot;          // heading already resolved from an aim at a ball
+  PhysicsOverrides overrides;     // the file's "physics" object; empty: the defaults
+};
+
+// Reads a scene file. Throws std::invalid_argument naming the file, the key and the value for an
+// unknown key, a missing one, a wrong type, an unknown table, ball set, rack or ball, a table whose
+// pockets would let the set's balls through (checkCapturesCoverOpenings), overlapping balls, a
+// ball off the table, an impossible shot or a physics override out of its range.
+Scene loadScene(const std::string& path);
+// The same from a parsed document named `source`. Given `own_shot` (a suite case's or a batch
+// line's own "shot", which replaces the scene's whole), the shot is read from it, so that a refusal
+// about it names where it stands.
+Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
+                    const JsonReader* own_shot = nullptr);
+
+// The physics of the scene's table and balls: pool or snooker cloth, the table's cushion height,
+// the ball set's radius and mass, then the scene's overrides.
+SimulationParams simulationParamsFor(const Scene& scene);
+
+// The cue: physics::CueStrikeParams defaults with the ball set's radius and mass, then the scene's
+// overrides (a squirt end mass turns squirt on).
+physics::CueStrikeParams cueStrikeParamsFor(const Scene& scene);
+
+struct SceneRun {
+  physics::CueStrikeResult strike;
+  std::vector<std::string> ball_ids;  // ball i of `result` is ball_ids[i]
+  SimulationResult result;
+};
+
+// Strikes the cue ball and simulates until everything is at rest (recording the balls' trajectories
+// when asked). The event loop's std::invalid_argument and BallLeftTableError come with the scene's
+// source in front and name the balls by id.
+SceneRun runScene(const Scene& scene, bool record_trajectories = false);
+
+}  // namespace baize::engine

@@ -1,0 +1,74 @@
+#include "engine/play/random_shots.h"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "engine/sim/contact_geometry.h"
+#include "engine/sim/shot_simulator.h"
+
+namespace baize::tools {
+
+engine::Scene nineFootPoolScene() {
+  engine::Scene scene;
+  scene.table = engine::builtinTable("pool-9ft");
+  scene.ball_set = engine::builtinBallSet("pool");
+  scene.cue_ball = "cue";
+  return scene;
+}
+
+std::vector<engine::Scene> randomSingleShots(int count) {
+  std::mt19937_64 engine(20261121);
+  auto uniform = [&](double lo, double hi) {
+    return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53);
+  };
+  const engine::Scene base = nineFootPoolScene();
+  const double R = base.ball_set.radius_m;
+  const double x = base.table.length_m / 2 - R, y = base.table.width_m / 2 - R;
+  std::vector<engine::Scene> shots;
+  while (static_cast<int>(shots.size()) < count) {
+    engine::Scene s = base;
+    s.balls = {{"cue", {uniform(-x, x), uniform(-y, y)}}, {"1", {uniform(-x, x), uniform(-y, y)}}};
+    if ((s.balls[0].position_m - s.balls[1].position_m).norm() < 2 * R) continue;
+    s.shot.speed_mps = uniform(0.5, 4);
+    s.shot.heading_rad = uniform(-M_PI, M_PI);
+    const double offset = uniform(0, 0.45), angle = uniform(-M_PI, M_PI);
+    s.shot.side_offset = offset * std::cos(angle);
+    s.shot.height_offset = offset * std::sin(angle);
+    shots.push_back(s);
+  }
+  return shots;
+}
+
+std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Scene>& shots,
+                                                    physics::CushionParams* params) {
+  std::vector<physics::BallVelocity> impacts;
+  for (std::size_t i = 0; i < shots.size(); ++i) {
+    const engine::Scene& shot = shots[i];
+    // One table and ball set throughout, so that one cushion stands for every impact.
+    if (shot.table.name != shots[0].table.name || shot.ball_set.name != shots[0].ball_set.name)
+      throw std::logic_error("cushionImpactsOf: the shots do not share one table and ball set");
+    engine::SceneRun run;
+    try {
+      run = engine::runScene(shot);
+    } catch (const std::exception& failure) {
+      throw std::runtime_error("random single shot " + std::to_string(i + 1) + ": " +
+                               failure.what());
+    }
+    const engine::TableGeometry table = engine::geometryOf(shot.table);
+    for (const engine::Event& event : run.result.events) {
+      if (event.kind != engine::EventKind::Cushion && event.kind != engine::EventKind::Jaw)
+        continue;
+      const physics::BallState& ball = event.before[0];
+      const engine::ContactFrame frame(
+          engine::contactNormal(table, event.kind, event.index, ball.position));
+      const physics::BallVelocity incoming = frame.toLocal(ball);
+      if (incoming.v.y() > 0) impacts.push_back(incoming);  // the loop's rule for an impact
+    }
+  }
+  if (!shots.empty()) *params = engine::simulationParamsFor(shots[0]).cushion;
+  return impacts;
+}
+
+}  // namespace baize::tools

@@ -1,0 +1,29 @@
+// The benches' seeded random single shots, and the cushion impacts they give the cushion model:
+// `baize bench shots` times the shots, `baize bench cushion --from-shots` scores the solvers on
+// their impacts (the impacts play produces, besides the bench's drawn sets).
+#pragma once
+
+#include <vector>
+
+#include "engine/io/scene.h"
+#include "physics/cushion_model.h"
+
+namespace baize::tools {
+
+// A scene on the 9 ft pool table with the pool ball set and "cue" as its cue ball, no balls placed:
+// what the benches' random shots start from.
+engine::Scene nineFootPoolScene();
+
+// A seeded set of single shots on the 9 ft table: the cue ball and one object ball anywhere, the
+// cue ball struck at 0.5-4 m/s in any direction with any tip offset (up to 0.45 R). The first
+// `count` shots are the same whatever `count` is.
+std::vector<engine::Scene> randomSingleShots(int count);
+
+// Every cushion and jaw impact of the shots, in order, as the cushion model met it: the incoming
+// ball in the contact's local frame (contacts not moving into the cushion, which are no impact,
+// left out). The shots run with their scenes' physics and must share one table and ball set;
+// `params` is set to their cushion's. A shot that fails throws std::runtime_error naming it.
+std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Scene>& shots,
+                                                    physics::CushionParams* params);
+
+}  // namespace baize::tools
