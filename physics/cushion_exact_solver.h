@@ -1,5 +1,5 @@
-// An accurate solver for the seed paper's cushion impact. It integrates the impact with an adaptive
-// Dormand-Prince 8(5,3) pair and locates exactly (to the tolerance) the end of compression, the end
+// An accurate solver for the cushion impact of the Mathavan 2010 model. It integrates the impact
+// with an adaptive Dormand-Prince 8(5,3) pair (dop853.h) and locates exactly (to the tolerance) the end of compression, the end
 // of restitution and every instant at which a stuck contact starts to slide or is held again, so
 // nothing chatters: a contact whose slip vanishes sticks while the friction needed to hold it lies
 // inside its friction cone, and otherwise slides along the one direction in which its slip grows
