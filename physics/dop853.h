@@ -196,6 +196,10 @@ struct DenseOutput {
 // an event function's Hermite interpolant along a step, from its values and slopes at the ends.
 double hermiteRoot(double g0, double d0, double g1, double d1);
 
+// locateEvent's search on the dense output stops once its bracket is this share of the step: a few
+// rounding units of the share, far below the interpolant's own error.
+constexpr double kDenseBracketShare = 1e-15;
+
 // Where along a step from z (rate k1) of length h, whose end event(end) <= tolerance crossed it,
 // the event function (positive before the event) reaches |event| <= tolerance: a first guess from
 // the dense output (Illinois regula falsi on it), then Illinois on the length of full steps from z
@@ -211,7 +215,7 @@ double locateEvent(const Vector& z, const Vector& k1, double h, const Stages<Vec
   // On the interpolant (no evaluations): a guess good to its O(h^4).
   int side = 0;
   double guess = 1;
-  for (int it = 0; it < max_iterations && hi - lo > 1e-15; ++it) {
+  for (int it = 0; it < max_iterations && hi - lo > kDenseBracketShare; ++it) {
     guess = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
     const double g = event(dense.at(guess));
     if (std::abs(g) <= tolerance) break;
