@@ -77,7 +77,7 @@ struct BallBallParams {
   // velocities and impulses, and to the approach speed for the normal approach and the normal work
   // (which decide where the impact ends). At the default the outgoing velocities agree with a
   // converged (1e-14) solution within 5e-11 of the approach speed (worst of 4000 random impacts:
-  // 4.9e-11), at about 150 rate evaluations per impact (at most about 1000, when a loaded cloth
+  // 3.4e-11), at about 140 rate evaluations per impact (at most about 950, when a loaded cloth
   // slip swings round close to zero).
   double tolerance = 1e-11;
   // > 0: use the paper's scheme instead, explicit Euler in P with this many increments of

@@ -30,7 +30,7 @@ inline double cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
 
 struct ContactState {
   bool frictionless = false;
-  ContactMode mode = ContactMode::Slip;  // Stick: held (see the top of the file)
+  ContactMode mode = ContactMode::Slip;  // Stick: held (see the top of cushion_exact_solver.cpp)
   Eigen::Vector2d direction =
       Eigen::Vector2d::UnitX();                      // slip direction for a slip of exactly zero
   Eigen::Vector2d creep = Eigen::Vector2d::UnitX();  // held: where to start looking for phi*
@@ -88,8 +88,8 @@ class ImpactEquations {
   // The s0 of sliding contact k's factor |u| / (|u| + s0) in sigma: 0 while it recedes (factor 1).
   double factorSlip(int k) const { return contacts_[k].receding ? 0.0 : regularizing_slip_; }
 
-  // The contact matrix (see the top of the file) times (a_x, a_y, b_x, b_y); half its entries are
-  // 0.
+  // The contact matrix (top of cushion_exact_solver.cpp) times (a_x, a_y, b_x, b_y); half its
+  // entries are 0.
   Eigen::Vector4d contactResponse(double ax, double ay, double bx, double by) const {
     return {3.5 * ax + coupling_x_ * bx, diagonal_y_ * ay + coupling_y_ * by,
             coupling_x_ * ax + 3.5 * bx, coupling_y_ * ay + 3.5 * by};

@@ -196,65 +196,68 @@ struct DenseOutput {
 // an event function's Hermite interpolant along a step, from its values and slopes at the ends.
 double hermiteRoot(double g0, double d0, double g1, double d1);
 
+// A bracket [lo, hi] on the root of a function positive before it (value g_lo > 0 at lo, g_hi <= 0
+// at hi), narrowed by the Illinois variant of regula falsi: when the same end moves twice in a row
+// the other end's value is halved, so that neither end sticks.
+struct IllinoisBracket {
+  double lo, g_lo, hi, g_hi;
+  int side = 0;  // the end that moved last: +1 lo, -1 hi
+  // The next trial: the root of the line through the ends.
+  double trial() const { return (lo * g_hi - hi * g_lo) / (g_hi - g_lo); }
+  // Moves the end on x's side of the root to x, where the function is g.
+  void narrow(double x, double g) {
+    if (g > 0) {
+      lo = x, g_lo = g;
+      if (side == +1) g_hi /= 2;
+      side = +1;
+    } else {
+      hi = x, g_hi = g;
+      if (side == -1) g_lo /= 2;
+      side = -1;
+    }
+  }
+};
+
 // locateEvent's search on the dense output stops once its bracket is this share of the step: a few
 // rounding units of the share, far below the interpolant's own error.
 constexpr double kDenseBracketShare = 1e-15;
 
 // Where along a step from z (rate k1) of length h, whose end event(end) <= tolerance crossed it,
 // the event function (positive before the event) reaches |event| <= tolerance: a first guess from
-// the dense output (Illinois regula falsi on it), then Illinois on the length of full steps from z
-// (each trial a step of the pair, exact to its order). Returns the located length and sets *at to
-// the state there; gives up after max_iterations trials, returning the bracket's upper end (where
-// the event has happened).
+// the dense output (Illinois regula falsi on it, no evaluations), then Illinois on the length of
+// full steps from z (each trial a step of the pair, exact to its order). Returns the located
+// length and sets *at to the state there; after max_iterations trials, the bracket's upper end
+// (where the event has happened).
 template <typename Vector, typename Rate, typename Event>
 double locateEvent(const Vector& z, const Vector& k1, double h, const Stages<Vector>& full,
                    const Rate& rate, const Event& event, double tolerance, int max_iterations,
                    Vector* at) {
   const DenseOutput<Vector> dense{z, k1, full.end, full.rate_at_end, h};
-  double lo = 0, hi = 1, g_lo = event(z), g_hi = event(full.end);
-  // On the interpolant (no evaluations): a guess good to its O(h^4).
-  int side = 0;
+  const double g_start = event(z), g_end = event(full.end);
+  IllinoisBracket share{0, g_start, 1, g_end};
   double guess = 1;
-  for (int it = 0; it < max_iterations && hi - lo > kDenseBracketShare; ++it) {
-    guess = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+  for (int it = 0; it < max_iterations && share.hi - share.lo > kDenseBracketShare; ++it) {
+    guess = share.trial();
     const double g = event(dense.at(guess));
     if (std::abs(g) <= tolerance) break;
-    if (g > 0) {
-      lo = guess, g_lo = g;
-      if (side == -1) g_hi /= 2;
-      side = -1;
-    } else {
-      hi = guess, g_hi = g;
-      if (side == 1) g_lo /= 2;
-      side = 1;
-    }
+    share.narrow(guess, g);
   }
-  // On full steps, bracketed by the whole step.
-  lo = 0, hi = h, g_lo = event(z), g_hi = event(full.end);
+  IllinoisBracket length{0, g_start, h, g_end};
   *at = full.end;
-  double length = guess * h;
-  side = 0;
+  double trial = guess * h;
   for (int it = 0; it < max_iterations; ++it) {
-    if (!(length > lo && length < hi)) length = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-    const Vector y = stages(z, k1, length, rate).end;
+    if (!(trial > length.lo && trial < length.hi)) trial = length.trial();
+    const Vector y = stages(z, k1, trial, rate).end;
     const double g = event(y);
     if (std::abs(g) <= tolerance) {
       *at = y;
-      return length;
+      return trial;
     }
-    if (g > 0) {
-      lo = length, g_lo = g;
-      if (side == -1) g_hi /= 2;
-      side = -1;
-    } else {
-      hi = length, g_hi = g;
-      *at = y;
-      if (side == 1) g_lo /= 2;
-      side = 1;
-    }
-    length = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+    if (!(g > 0)) *at = y;  // the bracket's upper end
+    length.narrow(trial, g);
+    trial = length.trial();
   }
-  return hi;
+  return length.hi;
 }
 
 }  // namespace baize::physics::dop853

@@ -21,7 +21,7 @@ using cushion_exact::kP;
 using cushion_exact::State;
 using cushion_exact::Step;
 
-constexpr double kTolerance = 3e-11;
+constexpr double kTolerance = test::kPartsTolerance;
 
 struct Frictionless {
   CushionParams params = [] {

@@ -26,7 +26,7 @@ using cushion_exact::kWork;
 using cushion_exact::Laws;
 using cushion_exact::State;
 
-constexpr double kTolerance = 3e-11;
+constexpr double kTolerance = test::kPartsTolerance;
 // Arithmetic in another association than the code under test, on values of order 1 m/s
 // (absolute, m/s).
 constexpr double kRoundoff = 1e-13;
@@ -72,7 +72,8 @@ TEST(CushionImpactEquations, SlipsChangeAtTheRateEachFrictionLawGives) {
     }
     // A stuck contact's law holds its slip: its slip rate is zero.
     for (int k = 0; k < 2; ++k) {
-      if (laws.stick[k]) EXPECT_NEAR(impact.slipRate(k, f).norm(), 0, kRoundoff) << stuck;
+      if (!laws.stick[k]) continue;
+      EXPECT_NEAR(impact.slipRate(k, f).norm(), 0, kRoundoff) << stuck;
     }
     // A sliding contact's friction lies on its cone's edge, along its direction.
     if (!laws.stick[0]) {
