@@ -67,6 +67,7 @@ class EventLocation : public StepControl {
  public:
   using StepControl::StepControl;
 
+  // The event's function at z, positive before it.
   double eventValue(const Event& event, const State& z) const;
   // d/dtau of the event's function from the rate r there; 0: none.
   double eventSlope(const Event& event, const State& r) const;
@@ -75,6 +76,7 @@ class EventLocation : public StepControl {
   // not the whole velocity scale: in a grazing impact v_y0 can lie below tolerance times |v| + R
   // |w|, and compression would "end" at once with the ball still moving in.
   double phaseEndScale() const { return compressing_ ? vy0_ : compression_work_; }
+  // Locating a crossed event on the step that crossed it, and landing on an aimed phase end.
   bool locate(const Event& event, const State& z, const State& k1, double h, const Step& full,
               double* length, Step* landed);
   bool polishOnto(const Event& event, const Step& from, double trial, double* shift,

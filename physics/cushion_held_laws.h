@@ -13,11 +13,15 @@ namespace baize::physics::cushion_exact {
 // stick solve): at the edge it slides, so that a located break takes effect where it is located.
 constexpr double kConeSlackRelative = 1e-12;
 
+// The held laws on top of the equations (each method is described where it is defined).
 class HeldLaws : public ImpactEquations {
  public:
   using ImpactEquations::ImpactEquations;
   using ImpactEquations::lagCorrected;
 
+  // phi*, the direction a held contact slides along when its cone cannot hold it: in closed form
+  // for the cloth while the nose slides, by Newton's method (exact for the nose's affine slip
+  // rate), or by a search of the circle.
   bool clothCreepDirection(int k, const Laws& laws, Eigen::Vector2d* result) const;
   // The cloth's slip rate r0 without its own friction, and k, while the nose slides along
   // laws.direction[0] (or is frictionless); see clothCreepDirection.
@@ -37,6 +41,7 @@ class HeldLaws : public ImpactEquations {
   bool creepDirectionAffine(int k, Laws laws, Eigen::Vector2d* result) const;
   Eigen::Vector2d creepDirectionSearch(int k, Laws laws) const;
   bool clothHeldLaws(Laws* laws) const;
+  // The lag of a slip growing from rest behind a turning phi*.
   double lagShare(int k, Laws laws, const Eigen::Vector2d& phi) const;
   static Eigen::Vector2d probeTurned(const Eigen::Vector2d& phi);
   static double lagShareOf(double growth, double restoring, double growth_order);
@@ -56,6 +61,7 @@ class HeldLaws : public ImpactEquations {
     return ((1 - weight) * origin + weight * phi).normalized();
   }
 
+  // The laws in force at slips u, and what decides them.
   Laws lawsAt(const std::array<Eigen::Vector2d, 2>& u, std::array<double, 2>* speed) const;
   int slidesFirst(const Laws& laws, const Friction& f,
                   const std::array<Eigen::Vector2d, 2>& u) const;

@@ -111,6 +111,7 @@ class ImpactEquations {
     return vy0_ - (c_ * z[kP] - s_ * z[kAy] + z[kBy]) * inverse_mass_;
   }
 
+  // Friction per unit P under given laws, the slip rates it gives and the cone margins.
   Friction frictionFor(const Laws& laws) const;
   Eigen::Vector2d slipRate(int k, const Friction& f) const;
   double coneMargin(int k, const Friction& f) const;

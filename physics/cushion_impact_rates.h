@@ -19,6 +19,7 @@ struct Step {
   std::array<Eigen::Vector2d, 2> slips_at_end = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
 };
 
+// The rates and the step on top of the held laws (each method is described where it is defined).
 class ImpactRates : public HeldLaws {
  public:
   using HeldLaws::HeldLaws;
@@ -38,11 +39,13 @@ class ImpactRates : public HeldLaws {
     return held(0) && slipping(1) && !contacts_[1].approaching;
   }
 
+  // dz/dtau at z under the laws in force, and its cases.
   State rate(const State& z);
   State generalRate(const State& z);
   State bothSlidingRate(const State& z);
   State slidingRate(const State& z) const;
 
+  // One Dormand-Prince 8(5,3) step of the impact, and the measure of its error.
   Step rungeKuttaStep(const State& z, const State& k1, double h);
   Step finishStep(const State& z, Step step, State third, State fifth, double h);
   bool slipReversed(const std::array<Eigen::Vector2d, 2>& before,

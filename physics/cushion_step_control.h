@@ -32,6 +32,7 @@ class StepControl : public ImpactRates {
  public:
   StepControl(const CushionParams& params, const BallVelocity& incoming, double tolerance);
 
+  // Caps on the next step (tau), each described where it is defined.
   double restartStep(const State& k1) const;
   double turningScaleStep(const std::array<Eigen::Vector2d, 2>& u, const State& k1) const;
   double slipDirectionStep(const std::array<Eigen::Vector2d, 2>& u) const;
