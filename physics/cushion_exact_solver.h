@@ -1,12 +1,12 @@
-// An accurate solver for the seed paper's cushion impact. It integrates the impact with an adaptive
-// Dormand-Prince 8(5,3) pair and locates exactly (to the tolerance) the end of compression, the end
-// of restitution and every instant at which a stuck contact starts to slide or is held again, so
-// nothing chatters: a contact whose slip vanishes sticks while the friction needed to hold it lies
-// inside its friction cone, and otherwise slides along the one direction in which its slip grows
-// along itself. Near a vanishing slip, where the friction direction turns arbitrarily fast, the
-// independent variable is rescaled so that the slip decays smoothly instead of being stepped
-// across. See the top of cushion_exact_solver.cpp for the method and docs/cushion.md for its
-// derivation.
+// An accurate solver for the cushion impact of the Mathavan 2010 model. It integrates the impact
+// with an adaptive Dormand-Prince 8(5,3) pair (dop853.h) and locates exactly (to the tolerance) the
+// end of compression, the end of restitution and every instant at which a stuck contact starts to
+// slide or is held again, so nothing chatters: a contact whose slip vanishes sticks while the
+// friction needed to hold it lies inside its friction cone, and otherwise slides along the one
+// direction in which its slip grows along itself. Near a vanishing slip, where the friction
+// direction turns arbitrarily fast, the independent variable is rescaled so that the slip decays
+// smoothly instead of being stepped across. See the top of cushion_exact_solver.cpp for the method
+// and docs/cushion.md for its derivation.
 #pragma once
 
 #include "physics/cushion_model.h"

@@ -1361,11 +1361,11 @@ TEST(CushionExactSolver, NoseSlidingOffAfterItsConeBreaksIsAccurateWithinItsEval
     EXPECT_GE(fast.contact_changes.size(), 3u) << "v_x " << in.v.x();
   }
 }
-// A ball with a little sidespin and topspin meeting the cushion at 83 degrees (one of the stick-slip
-// impacts of seeded random single shots on the 9 ft table): the nose slip falls to zero, is landed
-// on and sticks, and later slides off its cone. After each change the step starts again from a
-// tenth of the first step (kRestartStepFraction) instead of growing back threefold per step from
-// the step that landed on it (1e-9 of the impulse): 1431 evaluations before, 1290 since.
+// A ball with a little sidespin and topspin meeting the cushion at 83 degrees (one of the
+// stick-slip impacts of seeded random single shots on the 9 ft table): the nose slip falls to zero,
+// is landed on and sticks, and later slides off its cone. After each change the step starts again
+// from a tenth of the first step (kRestartStepFraction) instead of growing back threefold per step
+// from the step that landed on it (1e-9 of the impulse): 1431 evaluations before, 1290 since.
 constexpr long kStickThenSlipEvaluationBudget = 1350;
 
 TEST(CushionExactSolver, StepsStartAgainAfterAContactChangesItsLaw) {

@@ -418,8 +418,8 @@ TEST(CushionPaperSolver, TraceIsOnlyRecordedWhenAsked) {
 TEST(CushionPaperSolver, RejectsBadStepsParametersAndIncomingBalls) {
   const CushionParams p;
   const BallVelocity in = incomingBall(1.0, degrees(60), 0, 0);
-  for (int steps :
-       {0, -5, std::numeric_limits<int>::min(), kMaxPaperSteps + 1, std::numeric_limits<int>::max()}) {
+  for (int steps : {0, -5, std::numeric_limits<int>::min(), kMaxPaperSteps + 1,
+                    std::numeric_limits<int>::max()}) {
     PaperSolverOptions options;
     options.steps = steps;
     expectRejected([&] { solveCushionImpactPaper(p, in, options); },

@@ -1,0 +1,123 @@
+// Tests of the exact cushion solver's held laws: sliding contacts slide along their slips; a held
+// contact sticks only while its cone holds it and otherwise slides along phi*, the direction in
+// which its slip grows along itself (closed form, Newton's method and the search of the circle
+// agree on it); the lag correction blends the directions by the given share.
+#include "physics/cushion_held_laws.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/physics/cushion_exact_parts_support.h"
+
+namespace baize::physics {
+namespace {
+
+using cushion_exact::cross;
+using cushion_exact::Friction;
+using cushion_exact::HeldLaws;
+using cushion_exact::Laws;
+using cushion_exact::State;
+using Held = test::Exposed<HeldLaws>;
+
+constexpr double kTolerance = test::kPartsTolerance;
+// phi* is solved to 1e-10 rad (kCreepAngleTolerance): its slip rate's turn about it is that
+// small against the rate (relative).
+constexpr double kDirectionResidual = 1e-9;
+constexpr double kRoundoff = 1e-13;
+
+// Whether d is phi* of contact k under `laws` (contact k sliding along d): its slip rate lies
+// along d and grows along it.
+void expectGrowsAlongItself(const HeldLaws& impact, int k, Laws laws, const Eigen::Vector2d& d) {
+  laws.stick[k] = false;
+  laws.direction[k] = d;
+  const Eigen::Vector2d rate = impact.slipRate(k, impact.frictionFor(laws));
+  EXPECT_NEAR(d.norm(), 1, kRoundoff);
+  EXPECT_LE(std::abs(cross(d, rate)), kDirectionResidual * rate.norm()) << k;
+  EXPECT_GT(rate.dot(d), 0) << k;
+}
+
+TEST(CushionHeldLaws, SlidingContactsSlideAlongTheirSlips) {
+  const CushionParams p = test::snookerCushion();
+  const HeldLaws impact(p, test::spinningBall(p), kTolerance);
+  const auto u = impact.slips(State::Zero());
+  std::array<double, 2> speed{};
+  const Laws laws = impact.lawsAt(u, &speed);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_FALSE(laws.stick[k]);
+    EXPECT_NEAR((laws.direction[k] - u[k].normalized()).norm(), 0, kRoundoff);
+    EXPECT_EQ(speed[k], u[k].norm());
+  }
+}
+
+TEST(CushionHeldLaws, HeldClothSticksInsideItsConeAndElseSlidesAlongPhiStar) {
+  // A ball rolling into the cushion holds its cloth contact; with sidespin and at other angles
+  // the cone may or may not hold it. Either way the law must be consistent with the cone.
+  const CushionParams p = test::snookerCushion();
+  int stuck = 0, sliding = 0;
+  for (double angle_deg : {10.0, 30.0, 50.0, 70.0, 90.0}) {
+    for (double side : {-1.0, 0.0, 1.0}) {
+      const double a = angle_deg * 3.14159265358979323846 / 180;
+      Held impact(p, incomingBall(1.5, a, 1.5 / p.radius_m, side * 1.5 / p.radius_m), kTolerance);
+      impact.setContactMode(1, ContactMode::Stick);
+      auto u = impact.slips(State::Zero());
+      u[1].setZero();
+      const Laws laws = impact.lawsAt(u, nullptr);
+      if (laws.stick[1]) {
+        ++stuck;
+        EXPECT_GE(impact.coneMargin(1, impact.frictionFor(laws)), 0) << angle_deg;
+        EXPECT_NEAR(impact.slipRate(1, impact.frictionFor(laws)).norm(), 0, kRoundoff);
+      } else {
+        ++sliding;
+        expectGrowsAlongItself(impact, 1, laws, laws.direction[1]);
+        // The stick law would need more friction than its cone gives.
+        Laws sticking = laws;
+        sticking.stick[1] = true;
+        EXPECT_LT(impact.coneMargin(1, impact.frictionFor(sticking)), 0) << angle_deg;
+      }
+    }
+  }
+  EXPECT_GT(stuck + sliding, 0);
+}
+
+TEST(CushionHeldLaws, PhiStarOfTheNoseIsTheSameByEveryMethod) {
+  // A slippery nose held while the cloth slides: the stick law needs a friction of about
+  // s c / (s^2 + 5/2) = 0.14 of the normal impulse, beyond its cone.
+  CushionParams p = test::snookerCushion();
+  p.cushion_friction = 0.05;
+  for (double angle_deg : {20.0, 45.0, 80.0}) {
+    const double a = angle_deg * 3.14159265358979323846 / 180;
+    Held impact(p, incomingBall(2.0, a, -1.0 / p.radius_m, 2.0 / p.radius_m), kTolerance);
+    impact.setContactMode(0, ContactMode::Stick);
+    auto u = impact.slips(State::Zero());
+    u[0].setZero();
+    Laws laws;
+    laws.stick = {true, false};
+    laws.direction = {Eigen::Vector2d::UnitX(), u[1].normalized()};
+    ASSERT_LT(impact.coneMargin(0, impact.frictionFor(laws)), 0) << angle_deg;
+    const Eigen::Vector2d searched = impact.creepDirectionSearch(0, laws);
+    expectGrowsAlongItself(impact, 0, laws, searched);
+    Eigen::Vector2d newton;
+    const Eigen::Vector2d guess =
+        (searched + 0.05 * Eigen::Vector2d(-searched.y(), searched.x())).normalized();
+    ASSERT_TRUE(impact.creepDirection(0, laws, guess, &newton)) << angle_deg;
+    EXPECT_NEAR((newton - searched).norm(), 0, 1e-8) << angle_deg;
+  }
+}
+
+TEST(CushionHeldLaws, LagCorrectionBlendsByTheShare) {
+  const Eigen::Vector2d origin(1, 0), phi(0, 1);
+  EXPECT_EQ(HeldLaws::lagCorrected(origin, phi, 0), origin);
+  EXPECT_EQ(HeldLaws::lagCorrected(origin, phi, 1), phi);
+  const Eigen::Vector2d half = HeldLaws::lagCorrected(origin, phi, 0.5);
+  EXPECT_NEAR(half.x(), std::sqrt(0.5), kRoundoff);
+  EXPECT_NEAR(half.y(), std::sqrt(0.5), kRoundoff);
+  // The share of phi*'s turn a slip growing from rest follows: restoring / (growth / order +
+  // restoring), 1 where nothing restores or grows.
+  EXPECT_DOUBLE_EQ(HeldLaws::lagShareOf(2, 2, 1), 0.5);
+  EXPECT_DOUBLE_EQ(HeldLaws::lagShareOf(2, 2, 2), 2.0 / 3);
+  EXPECT_EQ(HeldLaws::lagShareOf(0, 2, 1), 1);
+}
+
+}  // namespace
+}  // namespace baize::physics

@@ -1,0 +1,97 @@
+// Tests of the exact cushion solver's step control: the fast inverse eighth root, the step factor
+// and its bounds, the predictive controller's trend, the extrapolated phase end, and the caps on a
+// step from the slips (none without friction; each within its definition with it).
+#include "physics/cushion_step_control.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "tests/physics/cushion_exact_parts_support.h"
+
+namespace baize::physics {
+namespace {
+
+using cushion_exact::extrapolatedRoot;
+using cushion_exact::inverseEighthRoot;
+using cushion_exact::kP;
+using cushion_exact::State;
+using cushion_exact::StepControl;
+using cushion_exact::stepFactor;
+
+constexpr double kTolerance = test::kPartsTolerance;
+// inverseEighthRoot's promise (cushion_step_control.cpp): within 0.21 % either way.
+constexpr double kEighthRootRelative = 2.1e-3;
+
+TEST(CushionStepControl, InverseEighthRootIsWithinItsPromise) {
+  for (double x = 1e-300; x < 1e300; x *= 3.7) {
+    const double exact = std::pow(x, -0.125);
+    EXPECT_NEAR(inverseEighthRoot(x) / exact, 1, kEighthRootRelative) << x;
+  }
+}
+
+TEST(CushionStepControl, StepFactorIsBoundedAndShrinksWithTheError) {
+  EXPECT_EQ(stepFactor(0), 3.0);  // no error: the largest growth
+  EXPECT_EQ(stepFactor(std::numeric_limits<double>::quiet_NaN()), 1.0 / 3);
+  EXPECT_EQ(stepFactor(1e30), 1.0 / 3);
+  EXPECT_NEAR(stepFactor(1), 0.9, 0.9 * kEighthRootRelative);  // the safety factor
+  EXPECT_NEAR(stepFactor(256), 0.45, 0.45 * kEighthRootRelative);
+  EXPECT_EQ(stepFactor(1e-30), 3.0);
+}
+
+TEST(CushionStepControl, ExtrapolatedRootOfALineAndOfACubic) {
+  // g(t) = 1 - t, seen a step of H = 0.5 before 0: the root is 1.
+  double root = 0;
+  ASSERT_TRUE(extrapolatedRoot(1.5, -1, 1, -1, 0.5, 2, &root));
+  EXPECT_NEAR(root, 1, 1e-15);
+  EXPECT_FALSE(extrapolatedRoot(1.5, -1, 1, -1, 0.5, 0.5, &root));  // beyond the limit
+  EXPECT_FALSE(extrapolatedRoot(1.5, -1, -1, -1, 0.5, 2, &root));   // already past
+  // g(t) = 1 - t - t^3 / 4: g(0.8) = 0.072, the root 0.8351...; seen from H = 0.4 before 0.
+  auto g = [](double t) { return 1 - t - t * t * t / 4; };
+  auto dg = [](double t) { return -1 - 0.75 * t * t; };
+  ASSERT_TRUE(extrapolatedRoot(g(-0.4), dg(-0.4), g(0), dg(0), 0.4, 2, &root));
+  EXPECT_NEAR(g(root), 0, 1e-14);
+}
+
+TEST(CushionStepControl, ControllerFollowsTheTrendOfAcceptedSteps) {
+  const CushionParams p = test::snookerCushion();
+  StepControl control(p, test::spinningBall(p), kTolerance);
+  // The first accepted step: the plain factor.
+  EXPECT_EQ(control.acceptedStepFactor(1.0, 0.5), stepFactor(0.5));
+  // The next, shorter by half with the same error: the steps shrink, and so does the next one.
+  const double factor = control.acceptedStepFactor(0.5, 0.5);
+  EXPECT_NEAR(factor, stepFactor(0.5) * 0.5, 1e-12);
+}
+
+TEST(CushionStepControl, NoCapsWithoutFrictionAndCapsWithIt) {
+  CushionParams p = test::poolCushion();
+  const BallVelocity ball = test::spinningBall(p);
+  {
+    CushionParams smooth = p;
+    smooth.cushion_friction = smooth.cloth_friction = 0;
+    StepControl control(smooth, ball, kTolerance);
+    const State z = State::Zero();
+    const State k1 = control.rate(z);
+    EXPECT_EQ(control.cappedStep(control.slips(z), k1, 0.25), 0.25);
+    // The restart step: a tenth of the first step's impulse, M v_y0 / 5, at dP/dtau = 1.
+    EXPECT_NEAR(control.restartStep(k1), 0.1 * 0.2 * p.mass_kg * ball.v.y(), 1e-18);
+  }
+  StepControl control(p, ball, kTolerance);
+  const State z = State::Zero();
+  const State k1 = control.rate(z);
+  const auto u = control.slips(z);
+  const double turning = control.turningScaleStep(u, k1);
+  const double direction = control.slipDirectionStep(u);
+  EXPECT_GT(turning, 0);
+  EXPECT_GT(direction, 0);
+  EXPECT_EQ(control.cappedStep(u, k1, 1e9), std::min(turning, direction));
+  // The turning scale: over it one slip changes by its own size (kTurningScaleSteps = 1).
+  const auto change = control.slipChanges(k1);
+  const double smallest = std::min(u[0].norm() / change[0].norm(), u[1].norm() / change[1].norm());
+  EXPECT_NEAR(turning, smallest, 1e-12 * smallest);
+  EXPECT_GT(k1[kP], 0);
+}
+
+}  // namespace
+}  // namespace baize::physics
