@@ -10,7 +10,7 @@
 
 #include "physics/value_text.h"
 
-namespace baize::tools {
+namespace baize::engine {
 namespace {
 
 using engine::EventKind;
@@ -432,4 +432,4 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
   return result;
 }
 
-}  // namespace baize::tools
+}  // namespace baize::engine

@@ -44,7 +44,7 @@
 
 #include "engine/sim/shot_simulator.h"
 
-namespace baize::tools {
+namespace baize::engine {
 
 struct Box2dPoolSettings {
   double time_step_s = 1.0 / 240;  // a fixed Box2D step, s
@@ -81,4 +81,4 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& params,
                                        const std::vector<physics::BallState>& balls,
                                        const Box2dPoolSettings& settings);
 
-}  // namespace baize::tools
+}  // namespace baize::engine

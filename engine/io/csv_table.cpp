@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace baize::tools {
+namespace baize::engine {
 namespace {
 
 std::vector<std::string> fieldsOf(const std::string& line) {
@@ -90,4 +90,4 @@ double CsvTable::number(size_t row, size_t column) const {
   return value;
 }
 
-}  // namespace baize::tools
+}  // namespace baize::engine

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace baize::tools {
+namespace baize::engine {
 
 class CsvTable {
  public:
@@ -30,4 +30,4 @@ class CsvTable {
   std::vector<int> line_numbers_;  // of each row in the file, for messages
 };
 
-}  // namespace baize::tools
+}  // namespace baize::engine

@@ -291,7 +291,7 @@ physics::CueStrikeParams cueStrikeParamsFor(const Scene& scene) {
   return cue;
 }
 
-SceneRun runScene(const Scene& scene, bool record_trajectories) {
+SceneRun runScene(const Scene& scene, bool record_trajectories, CushionImpactWorker* worker) {
   SimulationParams params = simulationParamsFor(scene);
   params.record_trajectories = record_trajectories;
   SceneRun run;
@@ -312,7 +312,7 @@ SceneRun runScene(const Scene& scene, bool record_trajectories) {
   // The event loop's refusals name balls by id; the scene's file is put in front of them.
   const std::string prefix = scene.source.empty() ? "" : scene.source + ": ";
   try {
-    run.result = simulate(params, cachedGeometryOf(scene.table), balls, run.ball_ids);
+    run.result = simulate(params, cachedGeometryOf(scene.table), balls, run.ball_ids, worker);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(prefix + e.what());
   } catch (const BallLeftTableError& e) {

@@ -51,7 +51,9 @@ struct SceneRun {
 
 // Strikes the cue ball and simulates until everything is at rest (recording the balls' trajectories
 // when asked). The event loop's std::invalid_argument and BallLeftTableError come with the scene's
-// source in front and name the balls by id.
-SceneRun runScene(const Scene& scene, bool record_trajectories = false);
+// source in front and name the balls by id. `worker`: a thread the caller hands over for solving
+// cushion impacts ahead (engine/sim/cushion_impact_worker.h); the result is the same without it.
+SceneRun runScene(const Scene& scene, bool record_trajectories = false,
+                  CushionImpactWorker* worker = nullptr);
 
 }  // namespace baize::engine

@@ -8,7 +8,7 @@
 #include "engine/sim/contact_geometry.h"
 #include "engine/sim/shot_simulator.h"
 
-namespace baize::tools {
+namespace baize::engine {
 
 engine::Scene nineFootPoolScene() {
   engine::Scene scene;
@@ -71,4 +71,4 @@ std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Sc
   return impacts;
 }
 
-}  // namespace baize::tools
+}  // namespace baize::engine

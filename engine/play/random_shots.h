@@ -8,7 +8,7 @@
 #include "engine/io/scene.h"
 #include "physics/cushion_model.h"
 
-namespace baize::tools {
+namespace baize::engine {
 
 // A scene on the 9 ft pool table with the pool ball set and "cue" as its cue ball, no balls placed:
 // what the benches' random shots start from.
@@ -26,4 +26,4 @@ std::vector<engine::Scene> randomSingleShots(int count);
 std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Scene>& shots,
                                                     physics::CushionParams* params);
 
-}  // namespace baize::tools
+}  // namespace baize::engine

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace baize::tools {
+namespace baize::engine {
 namespace {
 
 using physics::BallState;
@@ -60,9 +60,9 @@ void ShotCheck::fail(const std::string& kind, const std::string& message) {
   ++failures[kind];
 }
 
-ShotOutcome checkShot(const StressTable& table, const engine::SimulationParams& params,
+StressShotOutcome checkShot(const StressTable& table, const engine::SimulationParams& params,
                       const std::vector<BallState>& input) {
-  ShotOutcome out;
+  StressShotOutcome out;
   ShotCheck& check = out.check;
   engine::SimulationResult result;
   try {
@@ -138,4 +138,4 @@ ShotOutcome checkShot(const StressTable& table, const engine::SimulationParams& 
   return out;
 }
 
-}  // namespace baize::tools
+}  // namespace baize::engine

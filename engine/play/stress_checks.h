@@ -12,7 +12,7 @@
 #include "physics/cloth_motion.h"
 #include "engine/play/stress_tables.h"
 
-namespace baize::tools {
+namespace baize::engine {
 
 // Overlap between balls, or a centre closer than R to a cushion or jaw, beyond this is a failure,
 // m: contact positions come from polynomial roots, correct to rounding (~1e-14 m).
@@ -25,7 +25,7 @@ struct ShotCheck {
   bool failed() const { return !failures.empty(); }
 };
 
-struct ShotOutcome {
+struct StressShotOutcome {
   ShotCheck check;
   long events = 0;
   double worst_energy_growth = 0;  // largest relative growth of kinetic energy across an event
@@ -33,7 +33,7 @@ struct ShotOutcome {
 };
 
 // Simulates `balls` on `table` with `params` and checks every event.
-ShotOutcome checkShot(const StressTable& table, const engine::SimulationParams& params,
+StressShotOutcome checkShot(const StressTable& table, const engine::SimulationParams& params,
                       const std::vector<physics::BallState>& balls);
 
-}  // namespace baize::tools
+}  // namespace baize::engine

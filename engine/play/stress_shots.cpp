@@ -8,7 +8,7 @@
 
 #include "physics/cue_strike.h"
 
-namespace baize::tools {
+namespace baize::engine {
 namespace {
 
 using physics::BallState;
@@ -617,4 +617,4 @@ nlohmann::json sceneFileJson(const StressShot& shot, long max_events) {
   return doc;
 }
 
-}  // namespace baize::tools
+}  // namespace baize::engine

@@ -20,7 +20,7 @@
 #include "physics/cloth_motion.h"
 #include "engine/play/stress_tables.h"
 
-namespace baize::tools {
+namespace baize::engine {
 
 enum class StressShotKind {
   Random,            // 1-N balls anywhere, one moving (rectangle)
@@ -69,4 +69,4 @@ StressShot makeStressShot(const StressTables& tables, std::uint64_t seed, long s
 // The scene file of a cue shot as `baize simulate` reads it (physics: max_events only).
 nlohmann::json sceneFileJson(const StressShot& shot, long max_events);
 
-}  // namespace baize::tools
+}  // namespace baize::engine

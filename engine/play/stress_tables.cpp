@@ -6,7 +6,7 @@
 
 #include "engine/io/scene.h"
 
-namespace baize::tools {
+namespace baize::engine {
 namespace {
 
 // The pocketless table of the first stress runs: a 9 ft playing surface, m.
@@ -121,4 +121,4 @@ bool inPocket(const StressTable& table, const Eigen::Vector2d& centre) {
   return false;
 }
 
-}  // namespace baize::tools
+}  // namespace baize::engine

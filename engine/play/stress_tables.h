@@ -28,7 +28,7 @@
 #include "engine/sim/shot_simulator.h"
 #include "engine/io/table.h"
 
-namespace baize::tools {
+namespace baize::engine {
 
 enum class StressTableId { Rectangle, Pool9ft, Snooker12ft };
 
@@ -56,4 +56,4 @@ std::string offTableReason(const StressTable& table, const Eigen::Vector2d& cent
 // Whether the centre lies inside the capture circle of a pocket.
 bool inPocket(const StressTable& table, const Eigen::Vector2d& centre);
 
-}  // namespace baize::tools
+}  // namespace baize::engine

@@ -31,4 +31,10 @@ bool besideSegment(const CushionSegment& cushion, const Eigen::Vector2d& q) {
   return s >= 0 && s <= 1;
 }
 
+Eigen::Vector2d contactNormal(const TableGeometry& table, EventKind kind, int index,
+                              const Eigen::Vector2d& position) {
+  if (kind == EventKind::Cushion) return table.cushions[index].inward_normal;
+  return (position - table.jaws[index].centre_m).normalized();
+}
+
 }  // namespace baize::engine

@@ -26,7 +26,7 @@ std::string shortNumber(double value) {
 }  // namespace
 
 render::LineChart benchAccuracyChart(const std::string& csv_path) {
-  const CsvTable table = CsvTable::read(csv_path);
+  const engine::CsvTable table = engine::CsvTable::read(csv_path);
   const size_t engine = table.column("engine");
   const size_t setting = table.column("setting");
   const size_t time = table.column("median_us");

@@ -10,7 +10,6 @@
 #include <thread>
 #include <vector>
 
-#include "engine/sim/cushion_solve_ahead.h"
 #include "engine/io/json_reader.h"
 #include "engine/io/scene.h"
 #include "engine/play/shot_outcome.h"
@@ -115,9 +114,6 @@ int runBatch(const BatchFlags& flags) {
   const int threads = flags.threads > 0
                           ? flags.threads
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  // A batch is for throughput, and its own threads are how it uses the cores: the helper that
-  // solves impacts ahead for one shot's latency would only compete with them.
-  engine::CushionSolveAhead::setEnabled(false);
   const bool from_stdin = flags.input == "-";
   std::ifstream file;
   if (!from_stdin) {

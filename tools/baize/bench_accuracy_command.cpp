@@ -14,7 +14,6 @@
 #include <set>
 #include <sstream>
 
-#include "engine/sim/cushion_solve_ahead.h"
 #include "engine/baselines/fixed_step_simulator.h"
 #include "engine/io/scene.h"
 #include "tools/baize/atomic_file.h"
@@ -98,7 +97,7 @@ std::vector<Shot> shotSet() {
   auto uniform = [&](double lo, double hi) {
     return lo + (hi - lo) * static_cast<double>(random() >> 11) * 0x1.0p-53;
   };
-  const engine::Scene base = nineFootPoolScene();
+  const engine::Scene base = engine::nineFootPoolScene();
   const double R = base.ball_set.radius_m;
   const double x = base.table.length_m / 2 - R, y = base.table.width_m / 2 - R;
   for (int made = 0; made < kRandomShots;) {
@@ -250,7 +249,7 @@ std::vector<Configuration> configurations() {
       {1.0 / 60, "dt=1/60s"}, {1.0 / 240, "dt=1/240s"}, {1e-3, "dt=1ms"}, {1e-4, "dt=100us"}};
   for (const auto& [dt, name] : box2d) {
     list.push_back({"box2d", name, [dt = dt](const Shot& s) {
-                      Box2dPoolSettings settings;
+                      engine::Box2dPoolSettings settings;
                       settings.time_step_s = dt;
                       return simulateBox2d(s.params, s.table, s.balls, settings);
                     }});
@@ -265,9 +264,6 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
   if (flags.shots < 0) rejectFlag("--shots", flags.shots, "it must be >= 0 (0: all)");
   std::optional<AtomicFile> csv;
   if (!flags.csv_path.empty()) csv.emplace(flags.csv_path, "--csv");
-  // Every engine on one core, so that the times compare like with like (the event loop's helper,
-  // engine/sim/cushion_solve_ahead.h, would give it a second one).
-  engine::CushionSolveAhead::setEnabled(false);
   std::vector<Shot> shots = shotSet();
   if (flags.shots > 0 && flags.shots < static_cast<int>(shots.size())) shots.resize(flags.shots);
 

@@ -215,7 +215,7 @@ void runBench(const BenchFlags& flags) {
   std::vector<BenchInput> inputs;
   if (flags.from_shots) {
     const std::vector<physics::BallVelocity> impacts =
-        cushionImpactsOf(randomSingleShots(*flags.from_shots), &params);
+        engine::cushionImpactsOf(engine::randomSingleShots(*flags.from_shots), &params);
     for (const physics::BallVelocity& incoming : impacts) {
       inputs.push_back(
           {incoming, std::hypot(incoming.v.x(), incoming.v.y()), true, std::nullopt, std::nullopt});

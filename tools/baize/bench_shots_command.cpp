@@ -11,7 +11,7 @@
 #include <optional>
 #include <sstream>
 
-#include "engine/sim/cushion_solve_ahead.h"
+#include "engine/sim/cushion_impact_worker.h"
 #include "engine/io/scene.h"
 #include "physics/cushion_exact_solver.h"
 #include "tools/baize/atomic_file.h"
@@ -34,24 +34,24 @@ struct BenchShotsFlags {
 // Random shots run untimed before the timed pass (as each scene runs once untimed first).
 constexpr std::size_t kWarmUpShots = 50;
 
-// Cushion and jaw impacts in the runs with the helper, and how many it answered.
-struct HelperTally {
+// Cushion and jaw impacts in the runs with the worker, and how many it answered.
+struct WorkerTally {
   long impacts = 0;
   long taken_ahead = 0;
 };
 
-// One run of `scene` (wall time in microseconds), with or without the helper that solves cushion
-// impacts ahead on a second core (engine/sim/cushion_solve_ahead.h).
-double timedRun(const engine::Scene& scene, bool helper, std::size_t* events, HelperTally* tally) {
-  engine::CushionSolveAhead::setEnabled(helper);
-  const long taken_before = engine::CushionSolveAhead::impactsTakenAhead();
+// One run of `scene` (wall time in microseconds): on this thread alone (`worker` null), or with a
+// worker solving cushion impacts ahead on a second core (engine/sim/cushion_impact_worker.h).
+double timedRun(const engine::Scene& scene, engine::CushionImpactWorker* worker,
+                std::size_t* events, WorkerTally* tally) {
+  const long taken_before = worker ? worker->impactsTakenAhead() : 0;
   const auto start = std::chrono::steady_clock::now();
-  const engine::SceneRun run = engine::runScene(scene);
+  const engine::SceneRun run = engine::runScene(scene, false, worker);
   const double us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
   *events = run.result.events.size();
-  if (helper) {
-    tally->taken_ahead += engine::CushionSolveAhead::impactsTakenAhead() - taken_before;
+  if (worker) {
+    tally->taken_ahead += worker->impactsTakenAhead() - taken_before;
     for (const engine::Event& e : run.result.events)
       tally->impacts += e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw;
   }
@@ -59,24 +59,26 @@ double timedRun(const engine::Scene& scene, bool helper, std::size_t* events, He
 }
 
 struct Timing {
-  double median_us = 0;    // as simulate() runs by default: with the helper on a second core
-  double one_core_us = 0;  // without it
+  double one_core_us = 0;       // the shot on this thread alone
+  double two_core_wall_us = 0;  // with the worker on a second core (NaN without one)
   std::size_t events = 0;
 };
 
-// Runs `scene` with and without the helper, in alternating order (a shot's first run is slower:
-// its data is not yet in the caches), adding each run's time to `both` and `one`.
-// Median wall times of simulating `scene` with and without the helper, run alternately (in
-// alternating order) so that both see the same machine, and its event count.
-Timing timeScene(const engine::Scene& scene, int repeat, HelperTally* tally) {
-  std::vector<double> both, one;
+// Median wall times of simulating `scene` on one core and, given a worker, on two, run alternately
+// (in alternating order, so that both see the same machine), and its event count.
+Timing timeScene(const engine::Scene& scene, int repeat, engine::CushionImpactWorker* worker,
+                 WorkerTally* tally) {
+  std::vector<double> one, two;
   std::size_t events = 0;
   engine::runScene(scene);  // untimed warm-up: caches and the clock frequency settle first
   for (int i = 0; i < repeat; ++i) {
-    for (const bool helper : {i % 2 == 0, i % 2 != 0})
-      (helper ? both : one).push_back(timedRun(scene, helper, &events, tally));
+    for (const bool with_worker : {i % 2 != 0, i % 2 == 0}) {
+      if (with_worker && !worker) continue;
+      (with_worker ? two : one)
+          .push_back(timedRun(scene, with_worker ? worker : nullptr, &events, tally));
+    }
   }
-  return {median(both), median(one), events};
+  return {median(one), two.empty() ? NAN : median(two), events};
 }
 
 void runBenchShots(const BenchShotsFlags& flags) {
@@ -107,57 +109,60 @@ void runBenchShots(const BenchShotsFlags& flags) {
   std::ostringstream tolerance_column;
   if (flags.cushion_tolerance) tolerance_column << ',' << *flags.cushion_tolerance;
   const std::string row_end = tolerance_column.str() + '\n';
-  table << "scene,median_us,one_core_us,events"
+  table << "scene,one_core_us,two_core_wall_us,events"
         << (flags.cushion_tolerance ? ",cushion_tolerance" : "") << '\n';
   std::vector<std::filesystem::path> files;
   for (const auto& f : std::filesystem::directory_iterator(engine::assetsDirectory() + "/scenes")) {
     files.push_back(f.path());
   }
   std::sort(files.begin(), files.end());
-  const bool helper_setting = engine::CushionSolveAhead::enabled();
-  HelperTally tally;
+  // The second core is handed over only where one is there to take.
+  std::optional<engine::CushionImpactWorker> worker;
+  if (engine::CushionImpactWorker::secondCoreAvailable()) worker.emplace();
+  engine::CushionImpactWorker* const second = worker ? &*worker : nullptr;
+  WorkerTally tally;
   for (const auto& f : files) {
-    const Timing t = timeScene(withTolerance(engine::loadScene(f.string())), flags.repeat, &tally);
-    table << f.stem().string() << ',' << std::setprecision(4) << t.median_us << ',' << t.one_core_us
-          << ',' << t.events << row_end;
+    const Timing t =
+        timeScene(withTolerance(engine::loadScene(f.string())), flags.repeat, second, &tally);
+    table << f.stem().string() << ',' << std::setprecision(4) << t.one_core_us << ','
+          << t.two_core_wall_us << ',' << t.events << row_end;
   }
-  std::vector<engine::Scene> shots = randomSingleShots(flags.random_shots);
+  std::vector<engine::Scene> shots = engine::randomSingleShots(flags.random_shots);
   std::transform(shots.begin(), shots.end(), shots.begin(), withTolerance);
   for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i)
     engine::runScene(shots[i]);  // untimed warm-up, as for the scenes
   // Each shot once per pass (its first run: as a user runs it), one core first.
-  std::vector<double> both, one, events;
+  std::vector<double> one, two, events;
   double one_core_total_s = 0;
-  for (const bool helper : {false, true}) {
+  for (const engine::Scene& s : shots) {
+    std::size_t count = 0;
+    const double us = timedRun(s, nullptr, &count, &tally);
+    one.push_back(us);
+    one_core_total_s += us * 1e-6;
+    events.push_back(static_cast<double>(count));
+  }
+  if (second) {
     for (const engine::Scene& s : shots) {
       std::size_t count = 0;
-      const double us = timedRun(s, helper, &count, &tally);
-      (helper ? both : one).push_back(us);
-      if (!helper) {
-        one_core_total_s += us * 1e-6;
-        events.push_back(static_cast<double>(count));
-      }
+      two.push_back(timedRun(s, second, &count, &tally));
     }
   }
-  engine::CushionSolveAhead::setEnabled(helper_setting);
-  table << "random-single-shots," << std::setprecision(4) << median(both) << ',' << median(one)
-        << ',' << median(events) << row_end;
+  table << "random-single-shots," << std::setprecision(4) << median(one) << ','
+        << (two.empty() ? NAN : median(two)) << ',' << median(events) << row_end;
   std::cout << table.str();
   std::cout << "random single shots: " << std::setprecision(4) << shots.size() / one_core_total_s
-            << " shots/s on one core (" << shots.size()
-            << " shots without the helper; median events as above)\n";
+            << " shots/s on one core (" << shots.size() << " shots; median events as above)\n";
   if (flags.cushion_tolerance) {
     std::cout << "cushion impacts solved to tolerance " << *flags.cushion_tolerance
               << " (the exact solver's default: " << physics::ExactSolverOptions{}.tolerance
               << ")\n";
   }
-  if (engine::CushionSolveAhead::available()) {
-    std::cout << "helper: " << tally.taken_ahead << " of the " << tally.impacts
-              << " cushion and jaw impacts of the runs with it were solved ahead\n";
+  if (second) {
+    std::cout << "two cores: " << tally.taken_ahead << " of the " << tally.impacts
+              << " cushion and jaw impacts of the runs with the worker were solved ahead\n";
   } else {
-    std::cout
-        << "helper: not available here (one core, a CPU limit below two cores, or turned off): "
-           "both columns are one core\n";
+    std::cout << "two cores: not here (one core, or a CPU limit below two cores): "
+                 "two_core_wall_us is nan\n";
   }
   if (csv) {
     csv->stream() << table.str();

@@ -45,7 +45,7 @@ std::string csvPath(const std::string& directory, const std::string& figure) {
 // Rows with the same curve value in a run form one curve: the sweep writes curve after curve.
 void addReboundCharts(const std::string& directory, const ReboundFamily& family,
                       std::vector<NamedChart>& charts) {
-  const CsvTable table = CsvTable::read(csvPath(directory, family.figure));
+  const engine::CsvTable table = engine::CsvTable::read(csvPath(directory, family.figure));
   const size_t curve = table.column(family.curve_column);
   const size_t alpha = table.column("alpha_deg");
   const size_t speed = table.column("rebound_speed_mps");
@@ -77,7 +77,7 @@ void addReboundCharts(const std::string& directory, const ReboundFamily& family,
 }
 
 void addSlipCharts(const std::string& directory, std::vector<NamedChart>& charts) {
-  const CsvTable table = CsvTable::read(csvPath(directory, "fig10"));
+  const engine::CsvTable table = engine::CsvTable::read(csvPath(directory, "fig10"));
   const size_t impulse = table.column("impulse_Ns");
   const size_t contacts[2][2] = {
       {table.column("cushion_slip_mps"), table.column("cushion_slip_angle_deg")},
@@ -125,7 +125,7 @@ std::vector<NamedChart> cushionSweepCharts(const std::string& directory) {
 }
 
 render::LineChart cushionBenchChart(const std::string& csv_path) {
-  const CsvTable table = CsvTable::read(csv_path);
+  const engine::CsvTable table = engine::CsvTable::read(csv_path);
   const size_t solver = table.column("solver");
   const size_t setting = table.column("setting");
   const size_t time = table.column("median_ns");

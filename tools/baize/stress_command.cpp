@@ -18,7 +18,6 @@
 #include <thread>
 #include <vector>
 
-#include "engine/sim/cushion_solve_ahead.h"
 #include "engine/io/json_reader.h"
 #include "engine/io/scene.h"
 #include "physics/cue_strike.h"
@@ -55,8 +54,8 @@ struct StressFlags {
 
 struct FailedShot {
   long shot = 0;
-  StressShot made;
-  ShotCheck check;
+  engine::StressShot made;
+  engine::ShotCheck check;
 };
 
 // What a run of shots adds up to; sums and maxima, so the same whatever the threads did when.
@@ -96,12 +95,12 @@ nlohmann::json ballsJson(const std::vector<BallState>& balls) {
 // `baize stress --replay` checks it), else the balls' states (`baize stress --replay`). Numbers
 // are written with enough digits to read back bit for bit.
 nlohmann::json reproductionJson(const FailedShot& f, const StressFlags& flags) {
-  if (f.made.scene) return sceneFileJson(f.made, flags.max_events);
+  if (f.made.scene) return engine::sceneFileJson(f.made, flags.max_events);
   return {{"format", kStateFormat},
           {"seed", flags.seed},
           {"shot", f.shot},
-          {"kind", stressShotKindName(f.made.kind)},
-          {"table", makeStressTable(f.made.table).name},
+          {"kind", engine::stressShotKindName(f.made.kind)},
+          {"table", engine::makeStressTable(f.made.table).name},
           {"max_events", flags.max_events},
           {"first_failure", f.check.first_message},
           {"balls", ballsJson(f.made.balls)}};
@@ -114,7 +113,7 @@ std::string reproductionFileName(const FailedShot& f, const StressFlags& flags) 
 
 // A replay: the shot a reproduction file holds, on its table with its physics.
 struct Replay {
-  StressTable table;
+  engine::StressTable table;
   engine::SimulationParams params;
   std::vector<BallState> balls;
 };
@@ -152,7 +151,7 @@ Replay loadReplay(const std::string& path) {
     state.reject("format", std::string("\"") + kStateFormat + "\" (or a scene file)");
   }
   try {
-    replay.table = makeStressTable(stressTableIdByName(state.text("table")));
+    replay.table = engine::makeStressTable(engine::stressTableIdByName(state.text("table")));
   } catch (const std::invalid_argument& e) {
     state.reject("table", e.what());
   }
@@ -165,7 +164,7 @@ Replay loadReplay(const std::string& path) {
   if (state.has("shot") && !(document["shot"].is_number_unsigned())) {
     state.reject("shot", "it must be a whole number >= 0");
   }
-  if (state.has("kind") && !isStressShotKindName(state.text("kind"))) {
+  if (state.has("kind") && !engine::isStressShotKindName(state.text("kind"))) {
     state.reject("kind", "it must name a kind of stress shot, as the program writes it");
   }
   for (const engine::JsonReader& ball : state.objectArray("balls")) {
@@ -183,7 +182,7 @@ Replay loadReplay(const std::string& path) {
 // shared counter and finishes every shot it takes, so when the time budget stops the run the shots
 // done are exactly a first run of numbers, and each shot's result depends on (seed, shot) alone:
 // the summary is the same for any thread count.
-Tally runShots(const StressFlags& flags, const StressTables& tables, bool* stopped_by_budget) {
+Tally runShots(const StressFlags& flags, const engine::StressTables& tables, bool* stopped_by_budget) {
   std::atomic<long> next{0};
   std::atomic<bool> stop{false};
   std::mutex progress_mutex;
@@ -206,22 +205,22 @@ Tally runShots(const StressFlags& flags, const StressTables& tables, bool* stopp
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
             << " s\n";
       }
-      StressShot made;
-      ShotOutcome outcome;
+      engine::StressShot made;
+      engine::StressShotOutcome outcome;
       try {
-        made = makeStressShot(tables, flags.seed, shot, flags.max_balls);
+        made = engine::makeStressShot(tables, flags.seed, shot, flags.max_balls);
         engine::SimulationParams params = tables.of(made.table).params;
         params.max_events = flags.max_events;
-        outcome = checkShot(tables.of(made.table), params, made.balls);
+        outcome = engine::checkShot(tables.of(made.table), params, made.balls);
       } catch (const std::exception& e) {
-        // Not a failure of the event loop (checkShot records those) but of this program: stop the
+        // Not a failure of the event loop (engine::checkShot records those) but of this program: stop the
         // run and say which shot, rather than let the thread end the process.
         tally->error = "shot " + std::to_string(shot) + ": " + e.what();
         stop = true;
         return;
       }
       ++tally->shots;
-      ++tally->shots_by_kind[stressShotKindName(made.kind)];
+      ++tally->shots_by_kind[engine::stressShotKindName(made.kind)];
       tally->events += outcome.events;
       tally->pocketed += outcome.pocketed;
       tally->worst_energy_growth =
@@ -253,7 +252,7 @@ void runReplay(const StressFlags& flags) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--replay: ") + e.what());
   }
-  const ShotOutcome outcome = checkShot(replay.table, replay.params, replay.balls);
+  const engine::StressShotOutcome outcome = engine::checkShot(replay.table, replay.params, replay.balls);
   std::cout << "replay: " << flags.replay_path << ", table " << replay.table.name << ", balls "
             << replay.balls.size() << ", events " << outcome.events << ", ";
   if (!outcome.check.failed()) {
@@ -284,10 +283,7 @@ void runStress(const StressFlags& flags) {
     throw UsageError("--failures " + flags.failures_dir +
                      " is not allowed: it must be an existing directory");
   }
-  // For throughput, on its own threads: the helper that solves impacts ahead for one shot's
-  // latency would only compete with them (its results are the same bits either way).
-  engine::CushionSolveAhead::setEnabled(false);
-  const StressTables tables = makeStressTables();
+  const engine::StressTables tables = engine::makeStressTables();
   const auto started = std::chrono::steady_clock::now();
   bool stopped_by_budget = false;
   const Tally tally = runShots(flags, tables, &stopped_by_budget);
@@ -306,11 +302,11 @@ void runStress(const StressFlags& flags) {
       file.commit();
       // The file must make the same failure again, read back as --replay reads it.
       const Replay replay = loadReplay(written);
-      const ShotOutcome again = checkShot(replay.table, replay.params, replay.balls);
+      const engine::StressShotOutcome again = engine::checkShot(replay.table, replay.params, replay.balls);
       if (again.check.first_message != f.check.first_message) ++not_reproduced;
     }
     if (++reported > kMaxReportedShots) continue;
-    std::cout << "FAILED SHOT " << f.shot << " (" << stressShotKindName(f.made.kind) << ", "
+    std::cout << "FAILED SHOT " << f.shot << " (" << engine::stressShotKindName(f.made.kind) << ", "
               << tables.of(f.made.table).name << "): " << f.check.first_message << '\n';
     if (written.empty()) {
       std::cout << "  " << repro.dump() << '\n';

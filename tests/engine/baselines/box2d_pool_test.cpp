@@ -6,7 +6,7 @@
 
 #include "engine/io/table.h"
 
-namespace baize::tools {
+namespace baize::engine {
 namespace {
 
 using physics::BallState;
@@ -167,4 +167,4 @@ TEST(Box2dPool, RejectsBadSettings) {
 }
 
 }  // namespace
-}  // namespace baize::tools
+}  // namespace baize::engine

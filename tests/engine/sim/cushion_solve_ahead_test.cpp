@@ -55,63 +55,53 @@ std::uint64_t resultBits(const SimulationResult& result) {
   return hash;
 }
 
-// Turns the helper on (and wakes it: shots use it only while it is awake, which shots run back
-// to back keep it) or off for a test, and restores the setting when the test ends.
-class HelperSetting {
- public:
-  explicit HelperSetting(bool on) : saved_(CushionSolveAhead::enabled()) {
-    CushionSolveAhead::setEnabled(on);
-    if (on) CushionSolveAhead::wakeHelper();
-  }
-  ~HelperSetting() { CushionSolveAhead::setEnabled(saved_); }
+std::uint64_t oneCoreBits(const Scene& scene) { return resultBits(runScene(scene).result); }
 
- private:
-  bool saved_;
-};
+// Whether a worker can run beside the tests at all.
+bool twoCores() { return CushionImpactWorker::secondCoreAvailable(); }
 
-std::uint64_t oneCoreBits(const Scene& scene) {
-  HelperSetting off(false);
-  return resultBits(runScene(scene).result);
-}
-
-// Runs `scene` (each result must be `expected`) until the helper answered one of its impacts, or
-// for at most kPatience: where the helper can run at all it gets a core sooner or later, even
+// Runs `scene` (each result must be `expected`) until the worker answered one of its impacts, or
+// for at most kPatience: where the worker can run at all it gets a core sooner or later, even
 // while other test programs keep both cores busy. Whether it answered one.
 constexpr auto kPatience = std::chrono::seconds(10);
-bool runUntilAnImpactIsTakenAhead(const Scene& scene, std::uint64_t expected) {
-  const long taken_before = CushionSolveAhead::impactsTakenAhead();
+bool runUntilAnImpactIsTakenAhead(CushionImpactWorker& worker, const Scene& scene,
+                                  std::uint64_t expected) {
+  const long taken_before = worker.impactsTakenAhead();
   const auto start = std::chrono::steady_clock::now();
-  while (CushionSolveAhead::impactsTakenAhead() == taken_before &&
+  while (worker.impactsTakenAhead() == taken_before &&
          std::chrono::steady_clock::now() - start < kPatience) {
-    CushionSolveAhead::wakeHelper();
-    EXPECT_EQ(resultBits(runScene(scene).result), expected) << scene.source;
+    worker.wake();
+    EXPECT_EQ(resultBits(runScene(scene, false, &worker).result), expected) << scene.source;
   }
-  return CushionSolveAhead::impactsTakenAhead() > taken_before;
+  return worker.impactsTakenAhead() > taken_before;
 }
 
-// Runs `attempt` (waking the helper first, when `wake`) once, and again while none of its shots
-// held the helper, where it can run, for at most kPatience. Whether a shot held it.
-bool repeatUntilServed(const std::function<void()>& attempt, bool wake = true) {
+// Runs `attempt` (waking the worker first, when `wake`) once, and again while none of its shots
+// held the worker, where it can run, for at most kPatience. Whether a shot held it.
+bool repeatUntilServed(CushionImpactWorker& worker, const std::function<void()>& attempt,
+                       bool wake = true) {
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
-    if (wake) CushionSolveAhead::wakeHelper();
-    const long served_before = CushionSolveAhead::shotsServed();
+    if (wake) worker.wake();
+    const long served_before = worker.shotsServed();
     attempt();
-    if (CushionSolveAhead::shotsServed() > served_before) return true;
-    if (!CushionSolveAhead::available() || std::chrono::steady_clock::now() - start >= kPatience)
+    if (worker.shotsServed() > served_before) return true;
+    if (!twoCores() || std::chrono::steady_clock::now() - start >= kPatience)
       return false;
   }
 }
 
-// Runs `scene` `runs` times with the helper on, each result `expected`; where the helper can run,
+// Runs `scene` `runs` times with the worker on, each result `expected`; where the worker can run,
 // some impact is answered ahead (in those runs, or in more within kPatience).
 void expectTheSameBitsWithImpactsTakenAhead(const Scene& scene, std::uint64_t expected, int runs) {
-  HelperSetting on(true);
-  const long taken_before = CushionSolveAhead::impactsTakenAhead();
-  for (int run = 0; run < runs; ++run) EXPECT_EQ(resultBits(runScene(scene).result), expected);
-  if (CushionSolveAhead::available()) {
-    EXPECT_TRUE(CushionSolveAhead::impactsTakenAhead() > taken_before ||
-                runUntilAnImpactIsTakenAhead(scene, expected));
+  CushionImpactWorker worker;
+  worker.wake();
+  const long taken_before = worker.impactsTakenAhead();
+  for (int run = 0; run < runs; ++run)
+    EXPECT_EQ(resultBits(runScene(scene, false, &worker).result), expected);
+  if (twoCores()) {
+    EXPECT_TRUE(worker.impactsTakenAhead() > taken_before ||
+                runUntilAnImpactIsTakenAhead(worker, scene, expected));
   }
 }
 
@@ -155,30 +145,31 @@ std::vector<Scene> manyBallScenes() {
   return scenes;
 }
 
-TEST(CushionSolveAhead, ResultsAreTheSameBitForBitWithAndWithoutTheHelper) {
+TEST(CushionSolveAhead, ResultsAreTheSameBitForBitWithAndWithoutTheWorker) {
   const std::vector<Scene> scenes = manyBallScenes();
   std::vector<std::uint64_t> alone;
   for (const Scene& scene : scenes) alone.push_back(oneCoreBits(scene));
-  HelperSetting on(true);
-  const long taken_before = CushionSolveAhead::impactsTakenAhead();
-  for (int run = 0; run < 2; ++run) {  // the helper's share differs from run to run
+  CushionImpactWorker worker;
+  worker.wake();
+  const long taken_before = worker.impactsTakenAhead();
+  for (int run = 0; run < 2; ++run) {  // the worker's share differs from run to run
     for (std::size_t k = 0; k < scenes.size(); ++k) {
-      EXPECT_EQ(resultBits(runScene(scenes[k]).result), alone[k])
+      EXPECT_EQ(resultBits(runScene(scenes[k], false, &worker).result), alone[k])
           << scenes[k].source << " (speed " << scenes[k].shot.speed_mps << " m/s), run " << run;
     }
   }
-  // Not vacuous: where the helper can run, it answers impacts of these shots (how many depends on
+  // Not vacuous: where the worker can run, it answers impacts of these shots (how many depends on
   // what else runs on the machine); where it cannot, none.
-  if (CushionSolveAhead::available()) {
-    EXPECT_TRUE(CushionSolveAhead::impactsTakenAhead() > taken_before ||
-                runUntilAnImpactIsTakenAhead(scenes[0], alone[0]));
+  if (twoCores()) {
+    EXPECT_TRUE(worker.impactsTakenAhead() > taken_before ||
+                runUntilAnImpactIsTakenAhead(worker, scenes[0], alone[0]));
   } else {
-    EXPECT_EQ(CushionSolveAhead::impactsTakenAhead(), taken_before);
+    EXPECT_EQ(worker.impactsTakenAhead(), taken_before);
   }
 }
 
-// The helper solves in the loop's floating-point environment (here: rounding upwards).
-TEST(CushionSolveAhead, TheHelperSolvesInTheCallersRoundingMode) {
+// The worker solves in the loop's floating-point environment (here: rounding upwards).
+TEST(CushionSolveAhead, TheWorkerSolvesInTheCallersRoundingMode) {
   const Scene scene = shippedScene("9-ball-break");
   const int saved = std::fegetround();
   ASSERT_EQ(std::fesetround(FE_UPWARD), 0);
@@ -195,58 +186,60 @@ TEST(CushionSolveAhead, TheMathavan2010PaperSchemeIsSolvedAheadToTheSameBits) {
   expectTheSameBitsWithImpactsTakenAhead(scene, oneCoreBits(scene), 10);
 }
 
-TEST(CushionSolveAhead, TurnedOffItIsNeverUsed) {
+// Nothing is handed over to a worker the shot was not given: it serves no shot and answers no
+// impact, however many shots run beside it.
+TEST(CushionSolveAhead, AWorkerNotHandedOverIsNeverUsed) {
   const Scene scene = shippedScene("9-ball-break");
-  HelperSetting off(false);
-  const long served = CushionSolveAhead::shotsServed(),
-             taken = CushionSolveAhead::impactsTakenAhead();
+  CushionImpactWorker worker;
+  worker.wake();
   for (int run = 0; run < 10; ++run) runScene(scene);
-  EXPECT_EQ(CushionSolveAhead::shotsServed(), served);
-  EXPECT_EQ(CushionSolveAhead::impactsTakenAhead(), taken);
-  EXPECT_FALSE(CushionSolveAhead::available());
+  EXPECT_EQ(worker.shotsServed(), 0);
+  EXPECT_EQ(worker.impactsTakenAhead(), 0);
 }
 
-// Shots on several threads at once: one holds the helper at a time, the others solve their own
+// Shots on several threads at once: one holds the worker at a time, the others solve their own
 // impacts, and every result is the one-core result.
 TEST(CushionSolveAhead, ShotsOnSeveralThreadsAtOnceGiveTheOneCoreResults) {
   const std::vector<Scene> scenes = manyBallScenes();
   std::vector<std::uint64_t> expected;
   for (const Scene& scene : scenes) expected.push_back(oneCoreBits(scene));
-  HelperSetting on(true);
+  CushionImpactWorker worker;
   constexpr int kThreads = 3;
   std::vector<int> mismatches(kThreads, 0);
-  // Again while the helper served none of them (the machine may be busy).
-  const bool served = repeatUntilServed([&] {
+  // Again while the worker served none of them (the machine may be busy).
+  const bool served = repeatUntilServed(worker, [&] {
     std::vector<std::thread> threads;
     for (int t = 0; t < kThreads; ++t) {
       threads.emplace_back([&, t] {
         for (std::size_t k = 0; k < scenes.size(); ++k) {
           const std::size_t s = (k + static_cast<std::size_t>(t) * 7) % scenes.size();
-          if (resultBits(runScene(scenes[s]).result) != expected[s]) ++mismatches[t];
+          if (resultBits(runScene(scenes[s], false, &worker).result) != expected[s])
+            ++mismatches[t];
         }
       });
     }
     for (std::thread& thread : threads) thread.join();
   });
   for (int t = 0; t < kThreads; ++t) EXPECT_EQ(mismatches[t], 0) << "thread " << t;
-  EXPECT_EQ(served, CushionSolveAhead::available());
+  EXPECT_EQ(served, twoCores());
 }
 
-// A shot that fails (here: too few events allowed) releases the helper, and later shots get it.
-TEST(CushionSolveAhead, AFailedShotReleasesTheHelper) {
+// A shot that fails (here: too few events allowed) releases the worker, and later shots get it.
+TEST(CushionSolveAhead, AFailedShotReleasesTheWorker) {
   Scene failing = shippedScene("9-ball-break");
   failing.overrides.max_events = 40;
   const Scene scene = shippedScene("9-ball-break");
   const std::uint64_t alone = oneCoreBits(scene);
-  HelperSetting on(true);
-  // Until the failing shot held the helper (it may find the helper busy, asleep or on its own
+  CushionImpactWorker worker;
+  // Until the failing shot held the worker (it may find the worker busy, asleep or on its own
   // core while other programs use the machine).
   const bool failing_shot_held_it =
-      repeatUntilServed([&] { EXPECT_THROW(runScene(failing), std::runtime_error); });
-  for (int run = 0; run < 10; ++run) EXPECT_EQ(resultBits(runScene(scene).result), alone);
-  if (CushionSolveAhead::available()) {
+      repeatUntilServed(worker, [&] { EXPECT_THROW(runScene(failing, false, &worker), std::runtime_error); });
+  for (int run = 0; run < 10; ++run)
+    EXPECT_EQ(resultBits(runScene(scene, false, &worker).result), alone);
+  if (twoCores()) {
     EXPECT_TRUE(failing_shot_held_it);
-    EXPECT_TRUE(runUntilAnImpactIsTakenAhead(scene, alone));
+    EXPECT_TRUE(runUntilAnImpactIsTakenAhead(worker, scene, alone));
   }
 }
 
@@ -265,52 +258,52 @@ class HandOver : public ::testing::Test {
     return std::memcmp(a.v.data(), b.v.data(), sizeof(double) * 3) == 0 &&
            std::memcmp(a.w.data(), b.w.data(), sizeof(double) * 3) == 0;
   }
-  // Predicts `predicted` for ball 0, gives the helper time, then resolves `actual`; repeats
-  // (within kPatience) until the helper held the shot. Returns the answer and whether it held it.
+  // Predicts `predicted` for ball 0, gives the worker time, then resolves `actual`; repeats
+  // (within kPatience) until the worker held the shot. Returns the answer and whether it held it.
   std::pair<physics::BallVelocity, bool> handOver(const physics::BallVelocity& predicted,
                                                   const physics::BallVelocity& actual) {
     physics::BallVelocity answer;
-    const bool held = repeatUntilServed([&] {
+    const bool held = repeatUntilServed(worker_, [&] {
       std::this_thread::sleep_for(std::chrono::microseconds(200));
-      CushionSolveAhead ahead(params_, 1);
+      CushionSolveAhead ahead(params_, 1, &worker_);
       ahead.predict(0, 1.0, predicted);
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
       answer = ahead.resolve(0, actual);
     });
     return {answer, held};
   }
-  HelperSetting on_{true};
+  CushionImpactWorker worker_;
   SimulationParams params_ = poolSimulationParams();
 };
 
-TEST_F(HandOver, TheHelpersAnswerIsTakenForTheSameInput) {
-  // Until the helper's answer was taken (on a busy machine it may not have solved it in time).
+TEST_F(HandOver, TheWorkersAnswerIsTakenForTheSameInput) {
+  // Until the worker's answer was taken (on a busy machine it may not have solved it in time).
   bool taken_ahead = false;
   const auto start = std::chrono::steady_clock::now();
-  while (!taken_ahead && CushionSolveAhead::available() &&
+  while (!taken_ahead && twoCores() &&
          std::chrono::steady_clock::now() - start < kPatience) {
-    const long taken = CushionSolveAhead::impactsTakenAhead();
+    const long taken = worker_.impactsTakenAhead();
     const auto [answer, held] = handOver(incoming(1), incoming(1));
     EXPECT_TRUE(sameBits(answer, resolveCushionContact(params_, incoming(1))));
-    if (CushionSolveAhead::available()) {
+    if (twoCores()) {
       ASSERT_TRUE(held);
     }
-    taken_ahead = CushionSolveAhead::impactsTakenAhead() == taken + 1;
+    taken_ahead = worker_.impactsTakenAhead() == taken + 1;
   }
-  EXPECT_EQ(taken_ahead, CushionSolveAhead::available());
+  EXPECT_EQ(taken_ahead, twoCores());
 }
 
 TEST_F(HandOver, AnotherInputIsSolvedByTheLoop) {
-  const long taken = CushionSolveAhead::impactsTakenAhead();
+  const long taken = worker_.impactsTakenAhead();
   physics::BallVelocity actual = incoming(1);
   actual.v.x() = std::nextafter(actual.v.x(), 2.0);  // one bit off the prediction
   const auto [answer, held] = handOver(incoming(1), actual);
   EXPECT_TRUE(sameBits(answer, resolveCushionContact(params_, actual)));
   EXPECT_FALSE(sameBits(answer, resolveCushionContact(params_, incoming(1))));
-  if (CushionSolveAhead::available()) {
+  if (twoCores()) {
     ASSERT_TRUE(held);
   }
-  EXPECT_EQ(CushionSolveAhead::impactsTakenAhead(), taken);
+  EXPECT_EQ(worker_.impactsTakenAhead(), taken);
 }
 
 TEST_F(HandOver, AnImpactTheModelRefusesFailsInTheLoopWithTheModelsError) {
@@ -323,9 +316,9 @@ TEST_F(HandOver, AnImpactTheModelRefusesFailsInTheLoopWithTheModelsError) {
     loop_message = e.what();
   }
   ASSERT_FALSE(loop_message.empty());
-  // Handed over (the helper's solve fails), then resolved: the model's own error, every time.
-  const bool held = repeatUntilServed([&] {
-    CushionSolveAhead ahead(params_, 1);
+  // Handed over (the worker's solve fails), then resolved: the model's own error, every time.
+  const bool held = repeatUntilServed(worker_, [&] {
+    CushionSolveAhead ahead(params_, 1, &worker_);
     ahead.predict(0, 1.0, away);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
     std::string message;
@@ -336,13 +329,13 @@ TEST_F(HandOver, AnImpactTheModelRefusesFailsInTheLoopWithTheModelsError) {
     }
     EXPECT_EQ(message, loop_message);
   });
-  EXPECT_EQ(held, CushionSolveAhead::available());
+  EXPECT_EQ(held, twoCores());
 }
 
 TEST_F(HandOver, MorePredictionsThanJobsAreSolvedByTheLoop) {
-  constexpr int kBalls = 150;  // more than the helper's jobs
-  const bool held = repeatUntilServed([&] {
-    CushionSolveAhead ahead(params_, kBalls);
+  constexpr int kBalls = 150;  // more than the worker's jobs
+  const bool held = repeatUntilServed(worker_, [&] {
+    CushionSolveAhead ahead(params_, kBalls, &worker_);
     for (int k = 0; k < kBalls; ++k) ahead.predict(k, 1.0 + k, incoming(k));
     for (int k = 0; k < kBalls; ++k) {
       EXPECT_TRUE(
@@ -350,28 +343,26 @@ TEST_F(HandOver, MorePredictionsThanJobsAreSolvedByTheLoop) {
           << "ball " << k;
     }
   });
-  EXPECT_EQ(held, CushionSolveAhead::available());
+  EXPECT_EQ(held, twoCores());
 }
 
-// When shots use the helper: run back to back (after the second, it is awake for the next), not
+// When shots use the worker: run back to back (after the first, it is awake for the next), not
 // on their own (it is asleep by then, and a shot never waits for it to wake).
-TEST(CushionSolveAheadPolicy, ShotsOnTheirOwnDoNotUseTheHelperAndShotsBackToBackDo) {
-  const bool saved = CushionSolveAhead::enabled();
-  CushionSolveAhead::setEnabled(true);
+TEST(CushionSolveAheadPolicy, ShotsOnTheirOwnDoNotUseTheWorkerAndShotsBackToBackDo) {
   const Scene scene = shippedScene("9-ball-break");
-  const long served_before = CushionSolveAhead::shotsServed();
+  CushionImpactWorker worker;
   for (int shot = 0; shot < 5; ++shot) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));  // ten times its awake time
-    runScene(scene);
+    runScene(scene, false, &worker);
   }
-  EXPECT_EQ(CushionSolveAhead::shotsServed(), served_before);
+  EXPECT_EQ(worker.shotsServed(), 0);
   const bool served = repeatUntilServed(
+      worker,
       [&] {
-        for (int shot = 0; shot < 20; ++shot) runScene(scene);
+        for (int shot = 0; shot < 20; ++shot) runScene(scene, false, &worker);
       },
       /*wake=*/false);
-  EXPECT_EQ(served, CushionSolveAhead::available());
-  CushionSolveAhead::setEnabled(saved);
+  EXPECT_EQ(served, twoCores());
 }
 
 }  // namespace
