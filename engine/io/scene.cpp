@@ -291,28 +291,36 @@ physics::CueStrikeParams cueStrikeParamsFor(const Scene& scene) {
   return cue;
 }
 
-SceneRun runScene(const Scene& scene, bool record_trajectories, CushionImpactWorker* worker) {
-  SimulationParams params = simulationParamsFor(scene);
-  params.record_trajectories = record_trajectories;
-  SceneRun run;
-  run.strike = physics::strikeCueBall(cueStrikeParamsFor(scene), scene.shot);
-  std::vector<physics::BallState> balls;
-  balls.reserve(scene.balls.size());
-  run.ball_ids.reserve(scene.balls.size());
+SceneStart sceneStart(const Scene& scene, bool record_trajectories) {
+  SceneStart start;
+  start.params = simulationParamsFor(scene);
+  start.params.record_trajectories = record_trajectories;
+  start.strike = physics::strikeCueBall(cueStrikeParamsFor(scene), scene.shot);
+  start.balls.reserve(scene.balls.size());
+  start.ball_ids.reserve(scene.balls.size());
   for (const PlacedBall& b : scene.balls) {
     physics::BallState state;
     state.position = b.position_m;
     if (b.id == scene.cue_ball) {
-      state.velocity = run.strike.ball.v;
-      state.angular_velocity = run.strike.ball.w;
+      state.velocity = start.strike.ball.v;
+      state.angular_velocity = start.strike.ball.w;
     }
-    balls.push_back(state);
-    run.ball_ids.push_back(b.id);
+    start.balls.push_back(state);
+    start.ball_ids.push_back(b.id);
   }
+  return start;
+}
+
+SceneRun runScene(const Scene& scene, bool record_trajectories, CushionImpactWorker* worker) {
+  SceneStart start = sceneStart(scene, record_trajectories);
+  SceneRun run;
+  run.strike = start.strike;
+  run.ball_ids = start.ball_ids;
   // The event loop's refusals name balls by id; the scene's file is put in front of them.
   const std::string prefix = scene.source.empty() ? "" : scene.source + ": ";
   try {
-    run.result = simulate(params, cachedGeometryOf(scene.table), balls, run.ball_ids, worker);
+    run.result =
+        simulate(start.params, cachedGeometryOf(scene.table), start.balls, start.ball_ids, worker);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(prefix + e.what());
   } catch (const BallLeftTableError& e) {

@@ -43,6 +43,16 @@ SimulationParams simulationParamsFor(const Scene& scene);
 // overrides (a squirt end mass turns squirt on).
 physics::CueStrikeParams cueStrikeParamsFor(const Scene& scene);
 
+// A scene's shot ready for the event loop: the cue struck, the balls' states at t = 0 and their
+// parameters. Step it with ShotSimulation(params, cachedGeometryOf(scene.table), balls, ball_ids).
+struct SceneStart {
+  physics::CueStrikeResult strike;
+  SimulationParams params;
+  std::vector<physics::BallState> balls;
+  std::vector<std::string> ball_ids;  // ball i is ball_ids[i]
+};
+SceneStart sceneStart(const Scene& scene, bool record_trajectories = false);
+
 struct SceneRun {
   physics::CueStrikeResult strike;
   std::vector<std::string> ball_ids;  // ball i of `result` is ball_ids[i]

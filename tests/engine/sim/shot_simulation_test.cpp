@@ -47,22 +47,8 @@ struct Start {
 
 Start startOf(const std::string& name, bool record_trajectories = false) {
   const Scene scene = loadScene(assetsDirectory() + "/scenes/" + name + ".json");
-  Start s;
-  s.params = simulationParamsFor(scene);
-  s.params.record_trajectories = record_trajectories;
-  s.table = geometryOf(scene.table);
-  const physics::CueStrikeResult strike = physics::strikeCueBall(cueStrikeParamsFor(scene), scene.shot);
-  for (const PlacedBall& b : scene.balls) {
-    BallState state;
-    state.position = b.position_m;
-    if (b.id == scene.cue_ball) {
-      state.velocity = strike.ball.v;
-      state.angular_velocity = strike.ball.w;
-    }
-    s.balls.push_back(state);
-    s.ids.push_back(b.id);
-  }
-  return s;
+  const SceneStart start = sceneStart(scene, record_trajectories);
+  return {start.params, geometryOf(scene.table), start.balls, start.ball_ids};
 }
 
 const char* const kScenes[] = {"9-ball-break", "snooker-break-off", "three-cushion-bank",
