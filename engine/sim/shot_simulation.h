@@ -60,8 +60,10 @@ class ShotSimulation {
   // Ball i's state at the clock (as it fell, for a pocketed ball), and whether it is pocketed.
   physics::BallState ballAt(int i) const;
   bool pocketed(int i) const { return balls_[i].pocketed; }
-  // The events resolved so far.
+  // The events resolved so far, and (when SimulationParams::record_trajectories) every ball's path
+  // up to the last of them.
   const std::vector<Event>& events() const { return result_.events; }
+  const std::vector<Trajectory>& trajectories() const { return result_.trajectories; }
 
  private:
   // What the loop keeps of each ball. Its state is kept at its own reference time and moved on only

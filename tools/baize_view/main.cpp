@@ -1,9 +1,11 @@
-// baize-view: plays a shot in a window from its exact trajectories (never re-stepping physics) and,
-// on a scene, lets a person aim, strike and strike again. See docs/render.md for the keys.
+// baize-view: plays a shot in a window. A scene is stepped through the event loop as the clock runs
+// (a person can then aim, strike and strike again); a result file is played from its exact
+// trajectories. See docs/render.md for the keys.
 #include <SDL.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -35,6 +37,8 @@ constexpr double kAimLengthPerSpeed_m = 0.12;
 constexpr double kAimWidth_px = 2.0;
 // At most this many frames in --frames mode (ten minutes at 60 frames a second).
 constexpr int kMaxFrames = 36000;
+// The clock's end while a scene's shot is still being stepped.
+constexpr double kEndNotYetKnown = std::numeric_limits<double>::infinity();
 
 struct ViewFlags {
   std::string input;
@@ -58,12 +62,12 @@ class Viewer {
         window_("baize-view", flags.width_px, flags.height_px),
         renderer_(window_) {
     if (isResult(flags.input)) {
-      shot_ = render::loadShotRecord(flags.input);
+      loaded_ = render::loadShotRecord(flags.input);
+      playback_ = Playback(loaded_.end_time_s);
     } else {
       session_.emplace(engine::loadScene(flags.input));
-      shot_ = session_->shot();
+      playback_ = Playback(kEndNotYetKnown);
     }
-    playback_ = Playback(shot_.end_time_s);
   }
 
   int run() {
@@ -77,6 +81,7 @@ class Viewer {
         playback_.advance(std::chrono::duration<double>(now - last).count());
         last = now;
       }
+      stepShot();
       drawFrame();
       if (flags_.frames > 0 && frame >= flags_.frames) {
         if (!flags_.screenshot_path.empty()) {
@@ -162,15 +167,26 @@ class Viewer {
         if (const std::optional<std::string> error = session_->strike()) {
           std::cerr << "baize-view: the shot was refused: " << *error << '\n';
         } else {
-          shot_ = session_->shot();
-          playback_ = Playback(shot_.end_time_s);
+          playback_ = Playback(kEndNotYetKnown);
         }
       }
     }
     return true;
   }
 
-  bool canAim() const { return session_.has_value() && playback_.atEnd(); }
+  // The shot on show: the one being stepped, or the one read from a file.
+  const render::ShotRecord& shot() const { return session_ ? session_->shot() : loaded_; }
+
+  // Steps a scene's shot to the clock; once it is over, the clock's end is known.
+  void stepShot() {
+    if (!session_ || session_->atRest()) return;
+    session_->advanceTo(playback_.time_s());
+    if (!session_->atRest()) return;
+    playback_.setEndTime(session_->shot().end_time_s);
+    if (session_->failure()) std::cerr << "baize-view: the shot failed: " << *session_->failure() << '\n';
+  }
+
+  bool canAim() const { return session_.has_value() && session_->atRest() && playback_.atEnd(); }
 
   void aimAt(int window_x, int window_y) {
     if (camera_.width_px == 0) return;
@@ -179,7 +195,7 @@ class Viewer {
     // Mouse positions are in window units; the drawable may be larger (high-density screens).
     const Eigen::Vector2d pixel(window_x * static_cast<double>(camera_.width_px) / window_w,
                                 window_y * static_cast<double>(camera_.height_px) / window_h);
-    const std::optional<Eigen::Vector2d> at = camera_.tablePointAt(pixel, shot_.ball_set.radius_m);
+    const std::optional<Eigen::Vector2d> at = camera_.tablePointAt(pixel, shot().ball_set.radius_m);
     if (at) session_->aimAt(*at);
   }
 
@@ -192,8 +208,8 @@ class Viewer {
     options.time_s = playback_.time_s();
     options.traces = playback_.traces();
     options.legend = legend_;
-    options.pixel_size_m = render::pixelSizeFor(shot_.table, w, h);
-    render::Picture picture = render::buildShotPicture(shot_, options);
+    options.pixel_size_m = render::pixelSizeFor(shot().table, w, h);
+    render::Picture picture = render::buildShotPicture(shot(), options);
     if (canAim()) {
       const Eigen::Vector2d from = session_->cueBallAtRest();
       const double heading = session_->cue().heading_rad;
@@ -212,8 +228,12 @@ class Viewer {
 
   void updateTitle() {
     std::ostringstream title;
-    title << std::fixed << std::setprecision(2) << "baize-view  t " << playback_.time_s() << " / "
-          << playback_.endTime_s() << " s  x" << playback_.speed()
+    title << std::fixed << std::setprecision(2) << "baize-view  t " << playback_.time_s() << " / ";
+    if (std::isfinite(playback_.endTime_s()))
+      title << playback_.endTime_s();
+    else
+      title << "...";
+    title << " s  x" << playback_.speed()
           << (playback_.playing() ? "" : "  (paused)");
     if (session_) {
       title << "  |  cue " << session_->cue().speed_mps << " m/s, side "
@@ -230,7 +250,7 @@ class Viewer {
   render::View view_;
   SdlGlContext window_;
   render::GlRenderer renderer_;
-  render::ShotRecord shot_;
+  render::ShotRecord loaded_;  // a result file's shot
   std::optional<TableSession> session_;
   Playback playback_;
   render::Camera camera_;

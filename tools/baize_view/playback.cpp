@@ -9,6 +9,11 @@ void Playback::advance(double wall_s) {
   time_s_ = std::min(end_time_s_, time_s_ + wall_s * speed_);
 }
 
+void Playback::setEndTime(double end_time_s) {
+  end_time_s_ = end_time_s;
+  time_s_ = std::min(time_s_, end_time_s_);
+}
+
 void Playback::faster() { speed_ = std::min(kMaxPlaybackSpeed, speed_ * 2); }
 void Playback::slower() { speed_ = std::max(kMinPlaybackSpeed, speed_ / 2); }
 

@@ -12,7 +12,9 @@ constexpr double kScrubStep_s = 0.1;
 
 class Playback {
  public:
+  // `end_time_s` infinite: a shot still being simulated, whose end setEndTime() gives later.
   explicit Playback(double end_time_s = 0) : end_time_s_(end_time_s) {}
+  void setEndTime(double end_time_s);
 
   // Runs the clock on by `wall_s` of real time times the speed, stopping at the end.
   void advance(double wall_s);

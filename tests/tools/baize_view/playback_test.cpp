@@ -1,5 +1,7 @@
 #include "tools/baize_view/playback.h"
 
+#include <limits>
+
 #include <gtest/gtest.h>
 
 namespace baize::tools {
@@ -52,4 +54,18 @@ TEST(Playback, ScrubPausesAndStaysWithinTheShot) {
 }
 
 }  // namespace
+// A shot still being stepped has no end yet; once it has one, the clock stops there (and comes
+// back to it if it had run past).
+TEST(Playback, AnEndGivenLaterStopsTheClock) {
+  Playback playback(std::numeric_limits<double>::infinity());
+  playback.advance(3);
+  EXPECT_DOUBLE_EQ(playback.time_s(), 3.0);
+  EXPECT_FALSE(playback.atEnd());
+  playback.setEndTime(2.5);
+  EXPECT_DOUBLE_EQ(playback.time_s(), 2.5);
+  EXPECT_TRUE(playback.atEnd());
+  playback.advance(1);
+  EXPECT_DOUBLE_EQ(playback.time_s(), 2.5);
+}
+
 }  // namespace baize::tools
