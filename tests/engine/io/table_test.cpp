@@ -344,20 +344,6 @@ TEST_P(BuiltinTableTest, RailBoxIsTheNoseRectangleAndLiesInsideTheOutline) {
   }
 }
 
-// An outline with a notch reaching into its rail box, or a vertex inside it, gives no box.
-TEST(RailBox, AnEdgeOrVertexReachingIntoTheRailBoxEmptiesIt) {
-  const std::vector<Vector2d> square = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-  EXPECT_TRUE(railBoxInsideOutline(square).isApprox(
-      Eigen::AlignedBox2d(Vector2d(-1 + 1e-9, -1 + 1e-9), Vector2d(1 - 1e-9, 1 - 1e-9))));
-  // A V-shaped notch from the bottom rail up to (0, -0.5).
-  const std::vector<Vector2d> notched = {{-1, -1}, {-0.2, -1}, {0, -0.5}, {0.2, -1},
-                                         {1, -1},  {1, 1},     {-1, 1}};
-  EXPECT_TRUE(railBoxInsideOutline(notched).isEmpty());
-  // A slanted edge cutting a corner off.
-  const std::vector<Vector2d> cut = {{-1, -1}, {0.5, -1}, {1, -0.5}, {1, 1}, {-1, 1}};
-  EXPECT_TRUE(railBoxInsideOutline(cut).isEmpty());
-}
-
 // The cushion outline holds the table's centre and every place a ball rests on the playing
 // surface, and not a point just beyond a pocket's closing line or behind a rail.
 TEST_P(BuiltinTableTest, CushionOutlineHoldsThePlayingSurfaceAndEndsAtTheClosingLines) {
