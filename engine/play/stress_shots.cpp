@@ -44,6 +44,15 @@ constexpr double kBesidePocket_m = 0.15;
 // How often a generator tries a random placement before it settles for fewer balls.
 constexpr int kPlacementAttempts = 200;
 
+struct CuePlan;
+
+// Where a cue shot's balls stand (places[0] the cue ball) and the heading it is aimed at, deg.
+struct CueLayout {
+  std::vector<Eigen::Vector2d> places;
+  double aim_deg = 0;
+  void aimAt(const Eigen::Vector2d& target, double cut_R, double R);
+};
+
 class ShotMaker {
  public:
   ShotMaker(std::uint64_t seed, const StressTables& tables) : engine_(seed), tables_(tables) {}
@@ -107,6 +116,13 @@ class ShotMaker {
   StressShot nearSimultaneous(int max_balls);
   StressShot inTheMouth(int max_balls);
   StressShot cueShot(StressShotKind kind, int max_balls);
+  void layOutAtPocket(const StressTable& t, int max_balls, CueLayout* layout);
+  void layOutRack(const StressTable& t, CueLayout* layout);
+  void layOutClump(const StressTable& t, int max_balls, CueLayout* layout);
+  void layOutTiny(const StressTable& t, int max_balls, CueLayout* layout);
+  CuePlan drawStrike(StressShotKind kind, double aim_deg,
+                     const physics::CueStrikeParams& cue_params);
+  static double ballRadius(const StressTable& t) { return t.params.cushion.radius_m; }
   // A place touching a rail, facing or jaw of pocket k (clear of `balls`), if one is found.
   std::optional<Eigen::Vector2d> againstPocket(const StressTable& t, int pocket,
                                                const std::vector<Eigen::Vector2d>& balls,
@@ -340,119 +356,114 @@ struct CuePlan {
   double elevation_deg = 0;
 };
 
-StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
-  const StressTable& t =
-      tables_.of(chance(4) ? StressTableId::Snooker12ft : StressTableId::Pool9ft);
-  const double R = t.params.cushion.radius_m;
-  StressShot shot;
-  shot.kind = kind;
-  shot.table = t.id;
-  std::vector<Eigen::Vector2d> places;  // places[0] is the cue ball
-  double aim_deg = uniform(-180, 180);  // the heading, unless aimed at a ball below
-  // Aims the cue ball so that its line passes cut_R * R from the target's centre (|cut_R| < 2
-  // hits it: 0 full, near 2 thin).
-  auto aimAt = [&](const Eigen::Vector2d& target, double cut_R) {
-    const Eigen::Vector2d to = target - places[0];
-    const double cut = std::asin(std::clamp(cut_R * R / std::max(to.norm(), 2 * R), -1.0, 1.0));
-    aim_deg = (std::atan2(to.y(), to.x()) + cut) * 180 / M_PI;
-  };
-  switch (kind) {
-    case StressShotKind::CueAtPocket: {  // an object ball against a rail, facing or jaw; cue at it
-      const int pocket = integer(0, static_cast<int>(t.table.pockets.size()) - 1);
-      std::vector<Eigen::Vector2d> objects;
-      if (const auto p = againstPocket(t, pocket, objects, true)) objects.push_back(*p);
-      // The cue ball within 0.8 m of the object ball, or anywhere when that finds no room.
-      for (int attempt = 0; attempt < kPlacementAttempts && places.empty(); ++attempt) {
-        const Eigen::Vector2d at =
-            objects.empty() || attempt >= kPlacementAttempts / 2
-                ? anywhere(t)
-                : Eigen::Vector2d(objects[0] + uniform(0.06, 0.8) * direction());
-        if (clear(t, objects, at, true)) places.push_back(at);
-      }
-      if (places.empty()) {
-        objects.clear();
-        places.push_back(Eigen::Vector2d::Zero());
-      }
-      places.insert(places.end(), objects.begin(), objects.end());
-      if (places.size() > 1) aimAt(places[1], uniform(-1.5, 1.5));
-      fill(t, &places, std::min(max_balls, static_cast<int>(places.size()) + integer(0, 2)), true);
-      break;
-    }
-    case StressShotKind::CueCluster: {
-      if (chance(3)) {  // a rack, jittered as scenes jitter them, the cue ball anywhere in front
-        engine::RackOptions options;
-        options.jitter_seed = static_cast<std::uint64_t>(integer(0, 1 << 30));
-        options.jitter_radius_m = chance(2) ? 0 : options.gap_m / 2;
-        const std::string rack =
-            t.id == StressTableId::Snooker12ft ? "snooker" : (chance(2) ? "9-ball" : "8-ball");
-        for (const engine::PlacedBall& b : engine::placeRack(rack, t.table, t.ball_set, options)) {
-          places.push_back(b.position_m);
-        }
-        // Rack order puts the cue ball first; move it somewhere clear at random.
-        std::vector<Eigen::Vector2d> others(places.begin() + 1, places.end());
-        for (int attempt = 0; attempt < kPlacementAttempts; ++attempt) {
-          const Eigen::Vector2d at = anywhere(t);
-          if (clear(t, others, at, true)) {
-            places[0] = at;
-            break;
-          }
-        }
-        aimAt(places[1 + integer(0, static_cast<int>(places.size()) - 2)], uniform(-1, 1));
-        break;
-      }
-      // A clump: each ball touches (gap 0 or engine::kFrozenGap_m) one already placed; sometimes
-      // the first one touches a rail.
-      std::vector<Eigen::Vector2d> clump;
-      Eigen::Vector2d first = anywhere(t);
-      if (chance(2)) first.y() = (chance(2) ? 1 : -1) * (t.table.width_m / 2 - R);
-      if (clear(t, clump, first, true)) clump.push_back(first);
-      const int size = integer(2, std::max(2, max_balls - 1));
-      for (int attempt = 0;
-           attempt < kPlacementAttempts && !clump.empty() && static_cast<int>(clump.size()) < size;
-           ++attempt) {
-        const Eigen::Vector2d& next_to = clump[integer(0, static_cast<int>(clump.size()) - 1)];
-        const double gap = chance(2) ? 0 : engine::kFrozenGap_m;
-        const Eigen::Vector2d at = next_to + (2 * R + gap) * direction();
-        if (clear(t, clump, at, true)) clump.push_back(at);
-      }
-      for (int attempt = 0; attempt < kPlacementAttempts && places.empty(); ++attempt) {
-        const Eigen::Vector2d at = anywhere(t);
-        if (clear(t, clump, at, true)) places.push_back(at);
-      }
-      if (places.empty()) {
-        places.push_back(clump.back());
-        clump.pop_back();
-      }
-      places.insert(places.end(), clump.begin(), clump.end());
-      if (places.size() > 1)
-        aimAt(places[1 + integer(0, static_cast<int>(places.size()) - 2)], uniform(-1.2, 1.2));
-      break;
-    }
-    case StressShotKind::CueTiny: {  // the cue ball often touching a ball or a rail
-      fill(t, &places, 1, true);
-      const Eigen::Vector2d at = places[0];
-      const int touch = integer(0, 2);
-      if (touch == 0) {
-        const Eigen::Vector2d other = at + 2 * R * direction();
-        if (clear(t, places, other, true)) places.push_back(other);
-        if (places.size() > 1) aimAt(places[1], uniform(-1.9, 1.9));
-      } else if (touch == 1) {
-        places[0].y() = (chance(2) ? 1 : -1) * (t.table.width_m / 2 - R);
-        if (!clear(t, {}, places[0], true)) places[0] = at;
-      }
-      fill(t, &places, std::min(max_balls, static_cast<int>(places.size()) + integer(0, 2)), true);
-      break;
-    }
-    default: {  // CueMasse: 1 to max_balls anywhere
-      fill(t, &places, integer(1, max_balls), true);
-      if (places.size() > 1 && chance(2)) aimAt(places[1], uniform(-2, 2));
+// Aims the cue ball (places[0]) so that its line passes cut_R * R from the target's centre
+// (|cut_R| < 2 hits it: 0 full, near 2 thin).
+void CueLayout::aimAt(const Eigen::Vector2d& target, double cut_R, double R) {
+  const Eigen::Vector2d to = target - places[0];
+  const double cut = std::asin(std::clamp(cut_R * R / std::max(to.norm(), 2 * R), -1.0, 1.0));
+  aim_deg = (std::atan2(to.y(), to.x()) + cut) * 180 / M_PI;
+}
+
+// An object ball against a rail, facing or jaw; the cue ball at it.
+void ShotMaker::layOutAtPocket(const StressTable& t, int max_balls, CueLayout* layout) {
+  std::vector<Eigen::Vector2d>& places = layout->places;
+  const int pocket = integer(0, static_cast<int>(t.table.pockets.size()) - 1);
+  std::vector<Eigen::Vector2d> objects;
+  if (const auto p = againstPocket(t, pocket, objects, true)) objects.push_back(*p);
+  // The cue ball within 0.8 m of the object ball, or anywhere when that finds no room.
+  for (int attempt = 0; attempt < kPlacementAttempts && places.empty(); ++attempt) {
+    const Eigen::Vector2d at = objects.empty() || attempt >= kPlacementAttempts / 2
+                                   ? anywhere(t)
+                                   : Eigen::Vector2d(objects[0] + uniform(0.06, 0.8) * direction());
+    if (clear(t, objects, at, true)) places.push_back(at);
+  }
+  if (places.empty()) {
+    objects.clear();
+    places.push_back(Eigen::Vector2d::Zero());
+  }
+  places.insert(places.end(), objects.begin(), objects.end());
+  if (places.size() > 1) layout->aimAt(places[1], uniform(-1.5, 1.5), ballRadius(t));
+  fill(t, &places, std::min(max_balls, static_cast<int>(places.size()) + integer(0, 2)), true);
+}
+
+// A rack, jittered as scenes jitter them, the cue ball anywhere in front.
+void ShotMaker::layOutRack(const StressTable& t, CueLayout* layout) {
+  std::vector<Eigen::Vector2d>& places = layout->places;
+  engine::RackOptions options;
+  options.jitter_seed = static_cast<std::uint64_t>(integer(0, 1 << 30));
+  options.jitter_radius_m = chance(2) ? 0 : options.gap_m / 2;
+  const std::string rack =
+      t.id == StressTableId::Snooker12ft ? "snooker" : (chance(2) ? "9-ball" : "8-ball");
+  for (const engine::PlacedBall& b : engine::placeRack(rack, t.table, t.ball_set, options)) {
+    places.push_back(b.position_m);
+  }
+  // Rack order puts the cue ball first; move it somewhere clear at random.
+  std::vector<Eigen::Vector2d> others(places.begin() + 1, places.end());
+  for (int attempt = 0; attempt < kPlacementAttempts; ++attempt) {
+    const Eigen::Vector2d at = anywhere(t);
+    if (clear(t, others, at, true)) {
+      places[0] = at;
       break;
     }
   }
-  if (places.empty()) places.push_back(Eigen::Vector2d::Zero());
+  layout->aimAt(places[1 + integer(0, static_cast<int>(places.size()) - 2)], uniform(-1, 1),
+                ballRadius(t));
+}
 
-  // The strike: cue speed, elevation and a tip offset inside the miscue circle (a quarter of
-  // them on its edge); an offset the elevated cue cannot reach (Q . d >= 0) is drawn again.
+// A clump: each ball touches (gap 0 or engine::kFrozenGap_m) one already placed; sometimes the
+// first one touches a rail. The cue ball anywhere clear.
+void ShotMaker::layOutClump(const StressTable& t, int max_balls, CueLayout* layout) {
+  std::vector<Eigen::Vector2d>& places = layout->places;
+  const double R = ballRadius(t);
+  std::vector<Eigen::Vector2d> clump;
+  Eigen::Vector2d first = anywhere(t);
+  if (chance(2)) first.y() = (chance(2) ? 1 : -1) * (t.table.width_m / 2 - R);
+  if (clear(t, clump, first, true)) clump.push_back(first);
+  const int size = integer(2, std::max(2, max_balls - 1));
+  for (int attempt = 0;
+       attempt < kPlacementAttempts && !clump.empty() && static_cast<int>(clump.size()) < size;
+       ++attempt) {
+    const Eigen::Vector2d& next_to = clump[integer(0, static_cast<int>(clump.size()) - 1)];
+    const double gap = chance(2) ? 0 : engine::kFrozenGap_m;
+    const Eigen::Vector2d at = next_to + (2 * R + gap) * direction();
+    if (clear(t, clump, at, true)) clump.push_back(at);
+  }
+  for (int attempt = 0; attempt < kPlacementAttempts && places.empty(); ++attempt) {
+    const Eigen::Vector2d at = anywhere(t);
+    if (clear(t, clump, at, true)) places.push_back(at);
+  }
+  if (places.empty()) {
+    places.push_back(clump.back());
+    clump.pop_back();
+  }
+  places.insert(places.end(), clump.begin(), clump.end());
+  if (places.size() > 1)
+    layout->aimAt(places[1 + integer(0, static_cast<int>(places.size()) - 2)], uniform(-1.2, 1.2),
+                  R);
+}
+
+// The cue ball often touching a ball or a rail.
+void ShotMaker::layOutTiny(const StressTable& t, int max_balls, CueLayout* layout) {
+  std::vector<Eigen::Vector2d>& places = layout->places;
+  const double R = ballRadius(t);
+  fill(t, &places, 1, true);
+  const Eigen::Vector2d at = places[0];
+  const int touch = integer(0, 2);
+  if (touch == 0) {
+    const Eigen::Vector2d other = at + 2 * R * direction();
+    if (clear(t, places, other, true)) places.push_back(other);
+    if (places.size() > 1) layout->aimAt(places[1], uniform(-1.9, 1.9), R);
+  } else if (touch == 1) {
+    places[0].y() = (chance(2) ? 1 : -1) * (t.table.width_m / 2 - R);
+    if (!clear(t, {}, places[0], true)) places[0] = at;
+  }
+  fill(t, &places, std::min(max_balls, static_cast<int>(places.size()) + integer(0, 2)), true);
+}
+
+// The strike: cue speed, elevation and a tip offset inside the miscue circle (a quarter of them on
+// its edge); an offset the elevated cue cannot reach (Q . d >= 0) is drawn again.
+CuePlan ShotMaker::drawStrike(StressShotKind kind, double aim_deg,
+                              const physics::CueStrikeParams& cue_params) {
   CuePlan plan;
   plan.heading_deg = aim_deg;
   plan.elevation_deg = chance(3) ? 0 : uniform(0, kMaxElevation_deg);
@@ -461,12 +472,6 @@ StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
                             // Up to the fastest cue a scene may give, which sends the ball off
                             // at about the state shots' 16 m/s (physics/cue_strike.h).
                             : uniform(0.05, physics::kMaxCueSpeed_mps);
-  const physics::CueStrikeParams cue_params = [&] {
-    engine::Scene s;
-    s.table = t.table;
-    s.ball_set = t.ball_set;
-    return engine::cueStrikeParamsFor(s);
-  }();
   for (int attempt = 0;; ++attempt) {
     const double radius = (chance(4) ? 1.0 : std::sqrt(uniform(0, 1))) *
                           physics::kMiscueOffsetLimit * (1 - kMiscueMargin);
@@ -483,12 +488,16 @@ StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
       if (attempt > 50) plan.elevation_deg = 0;  // a level cue reaches every legal offset
     }
   }
+  return plan;
+}
 
-  const std::vector<std::string> ids = [&] {
-    std::vector<std::string> all;
-    for (const engine::BallSpec& b : t.ball_set.balls) all.push_back(b.id);
-    return all;
-  }();
+// The cue shot's scene file (as `baize stress --failures` writes it) and the scene exactly as
+// engine::loadScene builds it from that file, struck: balls in the JSON object's key order,
+// angles converted from degrees the same way.
+void writeCueShot(const StressTable& t, CuePlan plan, const std::vector<Eigen::Vector2d>& places,
+                  const physics::CueStrikeParams& cue_params, StressShot* shot) {
+  std::vector<std::string> ids;
+  for (const engine::BallSpec& b : t.ball_set.balls) ids.push_back(b.id);
   // "cue" first in the ball set; the others take the set's ids in order.
   for (std::size_t i = 0; i < places.size() && i < ids.size(); ++i)
     plan.positions[ids[i]] = places[i];
@@ -504,8 +513,6 @@ StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
                  {"side", plan.shot.side_offset},
                  {"height", plan.shot.height_offset}};
 
-  // The scene exactly as engine::loadScene builds it from `doc`: balls in the JSON object's key
-  // order, angles converted from degrees the same way.
   engine::Scene scene;
   scene.source = "stress";
   scene.table = t.table;
@@ -525,10 +532,46 @@ StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
       state.velocity = strike.ball.v;
       state.angular_velocity = strike.ball.w;
     }
-    shot.balls.push_back(state);
+    shot->balls.push_back(state);
   }
-  shot.scene = scene;
-  shot.scene_json = doc;
+  shot->scene = scene;
+  shot->scene_json = doc;
+}
+
+StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
+  const StressTable& t =
+      tables_.of(chance(4) ? StressTableId::Snooker12ft : StressTableId::Pool9ft);
+  StressShot shot;
+  shot.kind = kind;
+  shot.table = t.id;
+  CueLayout layout;
+  layout.aim_deg = uniform(-180, 180);  // the heading, unless aimed at a ball
+  switch (kind) {
+    case StressShotKind::CueAtPocket:
+      layOutAtPocket(t, max_balls, &layout);
+      break;
+    case StressShotKind::CueCluster:
+      if (chance(3))
+        layOutRack(t, &layout);
+      else
+        layOutClump(t, max_balls, &layout);
+      break;
+    case StressShotKind::CueTiny:
+      layOutTiny(t, max_balls, &layout);
+      break;
+    default:  // CueMasse: 1 to max_balls anywhere
+      fill(t, &layout.places, integer(1, max_balls), true);
+      if (layout.places.size() > 1 && chance(2))
+        layout.aimAt(layout.places[1], uniform(-2, 2), ballRadius(t));
+      break;
+  }
+  if (layout.places.empty()) layout.places.push_back(Eigen::Vector2d::Zero());
+  engine::Scene bare;
+  bare.table = t.table;
+  bare.ball_set = t.ball_set;
+  const physics::CueStrikeParams cue_params = engine::cueStrikeParamsFor(bare);
+  const CuePlan plan = drawStrike(kind, layout.aim_deg, cue_params);
+  writeCueShot(t, plan, layout.places, cue_params, &shot);
   return shot;
 }
 
