@@ -2,7 +2,7 @@
 //   baize chart sweep DIR                      the figure families of `baize cushion --sweep DIR`
 //   baize chart bench-cushion CSV --png OUT    time against error from `baize bench cushion --csv`
 // Reading CSV files rather than rerunning the model keeps a chart reproducible from the table it
-// shows. README ("Charts") and docs/cushion.md describe the charts.
+// shows. docs/cushion.md describes the charts.
 #pragma once
 
 namespace CLI {
