@@ -79,3 +79,14 @@ msg=$("$view" "$root/assets/scenes/stun-shot.json" --screenshot "$work/no.png" 2
 set -e
 [[ $status -eq 2 ]] || fail "--screenshot without --frames exited $status"
 echo "view CLI: all checks passed"
+
+# No display and no --frames: refused at once naming the way out, not a window nobody sees that
+# spins a core forever (exit 2, within a bounded time).
+set +e
+out=$(timeout 20 "$view" "$root/assets/scenes/9-ball-break.json" 2>&1)
+status=$?
+set -e
+[[ $status -eq 2 ]] || fail "baize-view with no display exited $status (2 expected): $out"
+grep -q "there is no display to show a window on (SDL video driver 'offscreen')" <<<"$out" ||
+  fail "no display message: $out"
+grep -q -- "--frames N --screenshot FILE" <<<"$out" || fail "no way out named: $out"

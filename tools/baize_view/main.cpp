@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
+#include <string>
 
 #include "engine/io/json_reader.h"
 #include "engine/io/scene.h"
@@ -37,6 +38,13 @@ constexpr double kAimLengthPerSpeed_m = 0.12;
 constexpr double kAimWidth_px = 2.0;
 // At most this many frames in --frames mode (ten minutes at 60 frames a second).
 constexpr int kMaxFrames = 36000;
+// A window's frames come at most this often, s, where the display does not pace them.
+constexpr double kShortestFrame_s = 1.0 / 120;
+// SDL's video drivers that open no window a person can see.
+bool windowless(const char* driver) {
+  return driver != nullptr &&
+         (std::string(driver) == "offscreen" || std::string(driver) == "dummy");
+}
 // The clock's end while a scene's shot is still being stepped.
 constexpr double kEndNotYetKnown = std::numeric_limits<double>::infinity();
 
@@ -61,6 +69,13 @@ class Viewer {
         view_(render::viewNamed(flags.view)),
         window_("baize-view", flags.width_px, flags.height_px),
         renderer_(window_) {
+    if (flags.frames == 0 && windowless(SDL_GetCurrentVideoDriver())) {
+      throw std::invalid_argument(
+          std::string("there is no display to show a window on (SDL video driver '") +
+          SDL_GetCurrentVideoDriver() +
+          "'): run it where DISPLAY or WAYLAND_DISPLAY is set, or draw frames without one with "
+          "--frames N --screenshot FILE");
+    }
     if (isResult(flags.input)) {
       loaded_ = render::loadShotRecord(flags.input);
       playback_ = Playback(loaded_.end_time_s);
@@ -94,6 +109,7 @@ class Viewer {
       }
       window_.swap();
       updateTitle();
+      paceFrame();
     }
   }
 
@@ -172,6 +188,16 @@ class Viewer {
       }
     }
     return true;
+  }
+
+  // Waits out the rest of kShortestFrame_s since the last frame: a display that does not pace
+  // swaps would otherwise have the viewer spin a core.
+  void paceFrame() {
+    const auto now = std::chrono::steady_clock::now();
+    const double spent_s = std::chrono::duration<double>(now - frame_start_).count();
+    if (spent_s < kShortestFrame_s)
+      SDL_Delay(static_cast<Uint32>((kShortestFrame_s - spent_s) * 1000) + 1);
+    frame_start_ = std::chrono::steady_clock::now();
   }
 
   // The shot on show: the one being stepped, or the one read from a file.
@@ -256,6 +282,7 @@ class Viewer {
   render::Camera camera_;
   std::string title_;
   bool legend_ = false;
+  std::chrono::steady_clock::time_point frame_start_ = std::chrono::steady_clock::now();
 };
 
 int runViewer(const ViewFlags& flags) {
