@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "physics/value_text.h"
 
@@ -142,6 +143,16 @@ JsonReader::JsonReader(const nlohmann::json& object, std::string source, std::st
   }
 }
 
+namespace {
+
+// The largest data file read, bytes: far above any table, scene or suite, and above the result
+// of a shot at the default event budget (100,000 events of under a kilobyte each).
+constexpr std::size_t kMaxInputFileBytes = std::size_t{256} << 20;
+// Bytes read at a time.
+constexpr std::size_t kReadBlockBytes = std::size_t{1} << 16;
+
+}  // namespace
+
 nlohmann::json JsonReader::parseFile(const std::string& file_path) {
   return parseStrictly(readTextFile(file_path), file_path, kValidJson);
 }
@@ -156,10 +167,21 @@ std::string JsonReader::readTextFile(const std::string& file_path) {
     throw std::invalid_argument(file_path +
                                 ": the file cannot be opened: it must exist and be readable");
   }
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read in blocks up to the limit, so that an endless input (/dev/zero, a pipe that never ends)
+  // is refused instead of read until memory runs out.
+  std::string text;
+  std::vector<char> block(kReadBlockBytes);
+  while (in) {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    text.append(block.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxInputFileBytes) {
+      throw std::invalid_argument(file_path + ": the file is larger than " +
+                                  std::to_string(kMaxInputFileBytes >> 20) +
+                                  " MiB, the most a data file may be");
+    }
+  }
   if (in.bad()) throw std::invalid_argument(file_path + ": the file cannot be read");
-  return text.str();
+  return text;
 }
 
 nlohmann::json JsonReader::parseText(const std::string& text, const std::string& source,

@@ -159,6 +159,12 @@ msg=$("$baize" simulate "$work/missing.json" 2>&1 >/dev/null); status=$?
 set -e
 [[ $status -ne 0 ]] || fail "a missing scene file was accepted"
 grep -q "missing.json" <<<"$msg" || fail "message does not name the file: $msg"
+# An endless input is refused at the size limit (exit 2, naming it), not read until memory ends.
+set +e
+msg=$(timeout 60 "$baize" simulate /dev/zero 2>&1 >/dev/null); status=$?
+set -e
+[[ $status -eq 2 ]] || fail "simulate /dev/zero exited $status: $msg"
+grep -q "/dev/zero: the file is larger than 256 MiB" <<<"$msg" || fail "message: $msg"
 # A table file whose corner capture circle sits far behind the mouth (or is too small) would let
 # the cue ball run out through the corner pocket: the scene is refused (exit 2) naming the table
 # file, the key and its value, instead of a ball stopping metres off the table with exit 0.
