@@ -94,6 +94,11 @@ expect_usage() {
 expect_usage "--budget" --ball 1 --pocket 3 --budget 10
 expect_usage "--region" --ball 1 --pocket 3 --region circle:0.5,0.1
 expect_usage "--region" --ball 1 --pocket 3 --region rectangle:0.5,0.1,0.4,0.2
+# Regions wholly off the table (the cue ball's centre stops within the noses less a radius).
+expect_usage "--region circle:5,5,0.1 is not allowed: it lies wholly off the table" \
+  --ball 1 --pocket 3 --region circle:5,5,0.1
+expect_usage "--region rectangle:2,0,3,1 is not allowed: it lies wholly off the table" \
+  --ball 1 --pocket 3 --region rectangle:2,0,3,1
 expect_usage "--pocket" --ball 1 --pocket nowhere
 expect_usage "ball 9" --ball 9 --pocket 3
 expect_usage "ball cue" --ball cue --pocket 3

@@ -94,6 +94,29 @@ engine::CueBallRegion parseRegion(const std::string& spec) {
   return reject();
 }
 
+// Refuses a region in which the cue ball cannot stop: one that lies wholly outside the rectangle
+// its centre can reach on the scene's table (the cushion noses moved in by a ball radius).
+void requireRegionOnTable(const engine::CueBallRegion& region, const std::string& spec,
+                          const engine::Scene& scene) {
+  const double R = scene.ball_set.radius_m;
+  const Eigen::Vector2d reach(scene.table.length_m / 2 - R, scene.table.width_m / 2 - R);
+  bool meets = false;
+  if (region.kind == engine::CueBallRegion::Kind::Circle) {
+    const Eigen::Vector2d nearest = region.centre_m.cwiseMax(-reach).cwiseMin(reach);
+    meets = (nearest - region.centre_m).norm() < region.radius_m;
+  } else {
+    meets = (region.min_m.array() < reach.array()).all() &&
+            (region.max_m.array() > -reach.array()).all();
+  }
+  if (meets) return;
+  std::ostringstream area;
+  area << "[" << -reach.x() << ", " << reach.x() << "] x [" << -reach.y() << ", " << reach.y()
+       << "] m";
+  throw UsageError("--region " + spec +
+                   " is not allowed: it lies wholly off the table, where the cue ball cannot "
+                   "stop; its centre stops within " + area.str() + " on " + scene.table.name);
+}
+
 std::string shotText(const physics::CueShot& s) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(3) << "speed " << s.speed_mps << " m/s, heading "
@@ -152,6 +175,7 @@ void runPlan(const PlanFlags& flags) {
   if (!flags.region.empty()) region = parseRegion(flags.region);
   if (!flags.png_path.empty()) checkOutputPath("--png", flags.png_path);
   engine::Scene scene = engine::loadScene(flags.scene);
+  if (region) requireRegionOnTable(*region, flags.region, scene);
   engine::PlanGoal goal{flags.ball, pocketIndex(flags.pocket, scene), region};
   try {
     engine::validatePlanGoal(scene, goal);
