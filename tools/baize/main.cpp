@@ -2,6 +2,8 @@
 // (tools/baize/<name>_command.*) and registers itself on the App built here.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "tools/baize/batch_command.h"
 #include "tools/baize/bench_accuracy_command.h"
@@ -11,6 +13,7 @@
 #include "tools/baize/chart_command.h"
 #include "tools/baize/check_command.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/command_lookup.h"
 #include "tools/baize/cushion_command.h"
 #include "tools/baize/plan_command.h"
 #include "tools/baize/render_command.h"
@@ -40,7 +43,21 @@ int main(int argc, char** argv) {
   addBenchAccuracyCommand(*bench);
   addBenchRenderCommand(*bench);
 
+  app.set_version_flag("--version", std::string("baize ") + BAIZE_VERSION);
+  app.footer("Run 'baize help COMMAND' (or 'baize COMMAND --help') for a command's flags.");
+
+  std::vector<std::string> words(argv + 1, argv + argc);
   try {
+    // "baize help [CMD ...]": the help of the command named (of baize itself with none).
+    if (!words.empty() && words[0] == "help") {
+      words.erase(words.begin());
+      checkCommandWords(app, words);
+      CLI::App* shown = &app;
+      for (const std::string& word : words) shown = subcommandNamed(*shown, word);
+      std::cout << shown->help();
+      return 0;
+    }
+    checkCommandWords(app, words);
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& failed) {  // a command that ran and reported its own error
     return failed.get_exit_code();
