@@ -1,0 +1,150 @@
+#!/usr/bin/env bash
+# Runs Baize's benchmarks and writes one report: the machine, the date and commit, and every table
+# (whole shots, accuracy against run time, the cushion solvers, rendering) with its charts. The
+# README's headline line is taken from it. Every measured figure in the docs comes from here.
+#
+# Usage: tools/bench_report.sh [--quick] [--baize PATH] [--out FILE] [--images DIR] [--readme FILE]
+#   --baize PATH   the program to measure (default build/baize)
+#   --out FILE     the report (default docs/benchmarks.md)
+#   --images DIR   where its charts go (default docs/images)
+#   --readme FILE  the file whose headline line is replaced (default README.md; "none": no file)
+#   --quick        tiny runs, for checking the report is made (the figures mean nothing)
+# Run from the repository's root after building (build/baize). It takes some minutes in full.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+out=docs/benchmarks.md images=docs/images readme=README.md quick=0 baize=build/baize
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --quick) quick=1; shift ;;
+    --out|--images|--readme|--baize)
+      [[ $# -ge 2 && -n "$2" ]] || { echo "bench_report.sh: $1 needs a value" >&2; exit 2; }
+      case "$1" in
+        --out) out=$2 ;; --images) images=$2 ;; --readme) readme=$2 ;; --baize) baize=$2 ;;
+      esac
+      shift 2 ;;
+    *) echo "bench_report.sh: unknown argument '$1' (allowed: --quick, --baize PATH, --out FILE," \
+         "--images DIR, --readme FILE)" >&2
+       exit 2 ;;
+  esac
+done
+[[ -x "$baize" ]] || { echo "bench_report.sh: $baize not found: build first (see README)" >&2; exit 1; }
+[[ -d "$images" ]] || { echo "bench_report.sh: --images $images is not a directory" >&2; exit 2; }
+if [[ "$readme" != none ]]; then
+  grep -q '<!-- benchmark-headline -->' "$readme" ||
+    { echo "bench_report.sh: $readme has no '<!-- benchmark-headline -->' line to replace" >&2; exit 2; }
+fi
+
+if [[ $quick -eq 1 ]]; then
+  shots_flags=(--repeat 1 --random-shots 30) accuracy_flags=(--shots 2 --repeats 1)
+  cushion_flags=(--impacts 30 --repeat 1) render_flags=(--repeat 1 --width 320 --height 160)
+else
+  shots_flags=(--repeat 21 --random-shots 3000) accuracy_flags=()
+  cushion_flags=() render_flags=()
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+progress() { [[ -t 2 ]] && echo "bench_report.sh: $*" >&2 || true; }
+
+progress "whole shots"
+"$baize" bench shots "${shots_flags[@]}" --csv "$work/shots.csv" > "$work/shots.txt"
+progress "accuracy against run time"
+"$baize" bench accuracy "${accuracy_flags[@]}" --csv "$work/accuracy.csv" > "$work/accuracy.txt"
+progress "cushion solvers"
+"$baize" bench cushion "${cushion_flags[@]}" --csv "$work/cushion.csv" > "$work/cushion.txt"
+progress "rendering"
+GALLIUM_DRIVER=llvmpipe "$baize" bench render "${render_flags[@]}" > "$work/render.txt"
+"$baize" chart bench-accuracy "$work/accuracy.csv" --png "$work/bench-accuracy.png" >/dev/null
+"$baize" chart bench-cushion "$work/cushion.csv" --png "$work/bench-cushion.png" >/dev/null
+
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+[[ -z "$(git status --porcelain 2>/dev/null)" ]] || commit="$commit (with uncommitted changes)"
+python3 - "$work" "$out.tmp" "$commit" "$quick" "$images" <<'PY'
+import csv, datetime, os, platform, sys
+work, out, commit, quick, images = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4] == "1", sys.argv[5]
+
+def table(path):
+    rows = list(csv.reader(open(path)))
+    lines = ["| " + " | ".join(rows[0]) + " |", "|" + "---|" * len(rows[0])]
+    lines += ["| " + " | ".join(r) + " |" for r in rows[1:]]
+    return "\n".join(lines)
+
+def text(path, skip_prefix=None):
+    return [l.rstrip() for l in open(path) if l.strip() and not (skip_prefix and l.startswith(skip_prefix))]
+
+cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), platform.processor())
+load = open("/proc/loadavg").read().split()[:3]
+shots = {r["scene"]: r for r in csv.DictReader(open(f"{work}/shots.csv"))}
+shot_lines = text(f"{work}/shots.txt")
+rate = next(l for l in shot_lines if l.startswith("random single shots:"))
+per_core = rate.split(":")[1].split("shots/s")[0].strip()
+headline = (f"Random single shots: {float(per_core):,.0f} per second on one core; "
+            f"9-ball break: {float(shots['9-ball-break']['one_core_us']):.0f} us on one core "
+            f"([docs/benchmarks.md](docs/benchmarks.md)).")
+now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+rel = os.path.relpath(images, os.path.dirname(os.path.abspath(out)) or ".")
+doc = [
+    "# Benchmarks",
+    "",
+    "Made by `tools/bench_report.sh`" + (" --quick (tiny runs: these figures mean nothing)" if quick else "") +
+    "; run it again to measure your machine. Times are medians; per-core figures ran on one core.",
+    "",
+    f"- Date: {now}",
+    f"- Commit: {commit}",
+    f"- Machine: {cpu}, {os.cpu_count()} cores, load {' '.join(load)} (1, 5, 15 min) at the end",
+    "",
+    "**" + headline + "**",
+    "",
+    "## Whole shots (`baize bench shots`)",
+    "",
+    "`one_core_us`: the shot on one core. `two_core_wall_us`: with a worker thread solving cushion",
+    "impacts ahead on a second core (`nan` where there is none).",
+    "",
+    table(f"{work}/shots.csv"),
+    "",
+] + [f"    {l}" for l in shot_lines if "," not in l and not l.startswith("wrote ")] + [
+    "",
+    "## Accuracy against run time (`baize bench accuracy`)",
+    "",
+    "Error of each engine's final positions against the exact event loop, and its time per shot.",
+    "",
+    table(f"{work}/accuracy.csv"),
+    "",
+    f"![Run time against error]({rel}/bench-accuracy.png)",
+    "",
+    "## The cushion solvers (`baize bench cushion`)",
+    "",
+    "Time per impact and the largest velocity error relative to V0 against a converged reference.",
+    "",
+    table(f"{work}/cushion.csv"),
+    "",
+    f"![Cushion solvers: time against error]({rel}/bench-cushion.png)",
+    "",
+    "## Rendering (`baize bench render`)",
+    "",
+] + [f"    {l}" for l in text(f"{work}/render.txt")] + [""]
+open(out, "w").write("\n".join(doc))
+open(out + ".headline", "w").write(headline + "\n")
+PY
+cp "$work/bench-accuracy.png" "$images/bench-accuracy.png"
+cp "$work/bench-cushion.png" "$images/bench-cushion.png"
+headline=$(cat "$out.tmp.headline")
+rm -f "$out.tmp.headline"
+mv "$out.tmp" "$out"
+if [[ "$readme" != none ]]; then
+  python3 - "$readme" "$headline" <<'PY'
+import sys
+path, headline = sys.argv[1], sys.argv[2]
+lines = open(path).read().split("\n")
+i = next(k for k, l in enumerate(lines) if l.strip() == "<!-- benchmark-headline -->")
+# The line after the marker is the headline.
+if i + 1 < len(lines) and lines[i + 1].strip():
+    lines[i + 1] = headline
+else:
+    lines.insert(i + 1, headline)
+open(path + ".tmp", "w").write("\n".join(lines))
+PY
+  mv "$readme.tmp" "$readme"
+fi
+echo "wrote $out: $headline"
