@@ -1,8 +1,8 @@
 // The CPU time a Linux control group (cgroup) lets this process use, in cores: a container started
 // with a CPU limit (docker --cpus=1) sees every core of its machine in its affinity mask, but may
 // use only the limit's worth of CPU time, and a thread that spins on a second core spends the
-// first's share. The helper that solves cushion impacts ahead (cushion_solve_ahead.h) runs only
-// where two cores' worth is allowed.
+// first's share. A worker that solves cushion impacts ahead (cushion_impact_worker.h) is worth
+// handing over only where two cores' worth is allowed.
 #pragma once
 
 #include <functional>
@@ -23,8 +23,8 @@ std::optional<double> cgroupCpuLimitCores(
     const std::string& mountinfo, const std::string& cgroup,
     const std::function<std::optional<std::string>(const std::string& path)>& read);
 
-// Whether a helper thread may run beside the caller: two or more cores in its affinity mask, and a
-// cgroup CPU limit, if any, of two cores or more (under a smaller one the helper's spinning would
+// Whether a second thread may run beside the caller: two or more cores in its affinity mask, and a
+// cgroup CPU limit, if any, of two cores or more (under a smaller one a spinning worker would
 // spend the caller's CPU time).
 bool twoCoresAllowed(int cores_in_affinity_mask, std::optional<double> cgroup_limit_cores);
 
