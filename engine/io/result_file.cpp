@@ -308,6 +308,14 @@ class ResultReader {
         trajectory.push_back(q);
       });
       if (trajectory.empty()) balls.reject(id, "a non-empty array of pieces");
+      // A path starts at the strike where the scene places its ball: otherwise it is not of this
+      // scene's shot.
+      const Eigen::Vector2d& placed = r_.scene.balls[trajectories.size()].position_m;
+      if (!(trajectory[0].start_time_s == 0 && trajectory[0].state.position == placed)) {
+        balls.reject(id, "pieces starting at 0 s where the scene places the ball, [" +
+                             physics::valueText(placed.x()) + ", " +
+                             physics::valueText(placed.y()) + "]");
+      }
       trajectories.push_back(std::move(trajectory));
     });
     // The shot ends when its last ball stops or falls, which the last piece of each path fixes:

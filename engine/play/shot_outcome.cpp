@@ -1,6 +1,7 @@
 #include "engine/play/shot_outcome.h"
 
 #include <stdexcept>
+#include <utility>
 
 namespace baize::engine {
 
@@ -62,13 +63,13 @@ ShotOutcome shotOutcome(const SceneRun& run, const std::string& cue_ball) {
   return outcome;
 }
 
-ShotResult shotResult(const Scene& scene, const SceneRun& run, bool with_recording) {
+ShotResult shotResult(Scene scene, const SceneRun& run, bool with_recording) {
   const ShotOutcome outcome = shotOutcome(run, scene.cue_ball);
   ShotResult r;
   r.source = scene.source;
-  r.scene = scene;
-  r.params = simulationParamsFor(scene);
-  r.physics = physicsJson(r.params, cueStrikeParamsFor(scene));
+  r.scene = std::move(scene);
+  r.params = simulationParamsFor(r.scene);
+  r.physics = physicsJson(r.params, cueStrikeParamsFor(r.scene));
   r.end_time_s = run.result.end_time_s;
   r.first_ball_hit = outcome.first_hit;
   r.cushions_before_first_hit = outcome.cushions_before_first_hit;

@@ -41,8 +41,9 @@ struct ShotOutcome {
 
 // The result file of a run of `scene` (engine/io/result_file.h): the scene as read, the parameters
 // it ran with, the outcome and, when `with_recording`, the run's events with their states and its
-// trajectories (when it recorded them).
-ShotResult shotResult(const Scene& scene, const SceneRun& run, bool with_recording);
+// trajectories (when it recorded them). The scene is taken by value: a caller done with it moves it
+// in (a batch writes thousands of results a second).
+ShotResult shotResult(Scene scene, const SceneRun& run, bool with_recording);
 
 // The outcome of a run whose cue ball is `cue_ball`. Throws std::invalid_argument when the run has
 // no ball of that id.

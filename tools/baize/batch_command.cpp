@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "engine/io/json_reader.h"
@@ -74,9 +75,9 @@ std::string runLine(const InputLine& line, const std::string& input_name, const 
     const nlohmann::json document =
         engine::JsonReader::parseText(line.text, source, "each line must be one JSON object");
     if (document.is_object() && document.contains("id")) id = document.at("id");
-    const engine::Scene scene = lineScene(document, source, folder);
-    engine::ShotResult result =
-        engine::shotResult(scene, engine::runScene(scene), /*with_recording=*/false);
+    engine::Scene scene = lineScene(document, source, folder);
+    const engine::SceneRun run = engine::runScene(scene);
+    engine::ShotResult result = engine::shotResult(std::move(scene), run, /*with_recording=*/false);
     result.line = line.number;
     result.id = id;
     out = engine::resultJson(result);

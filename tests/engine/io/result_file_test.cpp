@@ -254,6 +254,9 @@ TEST(ResultFile, RefusalsNameTheFileTheKeyTheValueAndWhatIsAllowed) {
        "result.json: events[0].after[0].angular_velocity_radps = [0,0,100000.0] is not allowed: "
        "each "
        "component must be of magnitude at most 10000 rad/s"},
+      {"a path not from the scene's placement",
+       [](nlohmann::json& r) { r["trajectories"]["1"][0]["position_m"][0] = 0.1; },
+       "result.json: trajectories.1 = [{"},
       {"piece before the strike",
        [](nlohmann::json& r) { r["trajectories"]["1"][0]["start_time_s"] = -1; },
        "result.json: trajectories.1[0].start_time_s = -1 is not allowed: it must be a finite "
