@@ -165,7 +165,7 @@ void addSimulateCommand(CLI::App& parent) {
       "simulate", "Strike a scene's cue ball and simulate the shot until every ball is at rest");
   command->add_option("scene", flags->scene, "the scene file (JSON, see docs/scenes.md)")
       ->required();
-  command->add_option("--json", flags->json_path, "also write the events and final states here")
+  command->add_option("--json", flags->json_path, "also write the result file here (docs/results.md)")
       ->check(notEmpty());
   command->add_option("--sample", flags->samples,
                       "print (and with --json write) BALL's state at TIME_S seconds after the "
