@@ -251,7 +251,8 @@ class ResultReader {
     const nlohmann::json& first = top_.json().at("first_ball_hit");
     if (!first.is_null()) {
       const int ball = ballIndex(top_, "first_ball_hit");
-      if (ids_[ball] == r_.scene.cue_ball) top_.reject("first_ball_hit", "not the cue ball");
+      if (ids_[ball] == r_.scene.cue_ball)
+        top_.reject("first_ball_hit", "a ball other than the cue ball");
       r_.first_ball_hit = ids_[ball];
     }
     r_.cushions_before_first_hit = count(top_, "cushions_before_first_hit");
@@ -373,7 +374,9 @@ class ResultReader {
         }
         EventBalls& balls = std::string(key) == "before" ? e.before : e.after;
         forEach(event, key, [&](const nlohmann::json& s, const std::string& state_path) {
-          balls.push_back(state(JsonReader(s, source_, state_path)));
+          const JsonReader ball(s, source_, state_path);
+          ball.requireExactKeys({"position_m", "velocity_mps", "angular_velocity_radps"});
+          balls.push_back(state(ball));
         });
       }
       events.push_back(e);

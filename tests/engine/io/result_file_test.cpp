@@ -296,6 +296,9 @@ TEST(ResultFile, RefusalsNameTheFileTheKeyTheValueAndWhatIsAllowed) {
          }
        },
        "].other = \"1\" is not allowed: only a ball-ball event names another ball"},
+      {"an unknown key in an event's state",
+       [](nlohmann::json& r) { r["events"][2]["before"][0]["spin"] = 1; },
+       "result.json: events[2].before[0].spin = 1 is not allowed: unknown key"},
       {"three balls in one event",
        [](nlohmann::json& r) {
          nlohmann::json& after = r["events"][0]["after"];
