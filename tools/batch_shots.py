@@ -7,7 +7,9 @@
 Each line is a whole scene with an "id": the cue ball and one object ball anywhere on the 9 ft
 table (apart), struck at 0.5-4 m/s towards the object ball give or take 10 deg, with any tip offset
 inside the miscue limit. Python's random module is seeded, so the file depends only on N and the
-seed (for a given Python version's Mersenne Twister, which is specified).
+seed (for a given Python version's Mersenne Twister, which is specified). `baize batch` answers
+each line with a result in the format of docs/results.md (`first_ball_hit`, `pocketed`,
+`final_positions_m`, ..., and the line's scene embedded); the "id" here joins results to shots.
 """
 import argparse
 import json

@@ -55,6 +55,10 @@ class JsonReader {
   double nonNegativeNumber(const std::string& key) const;       // finite and >= 0
   int integer(const std::string& key, int min, int max) const;  // an integer in [min, max]
 
+  const nlohmann::json& json() const { return object_; }  // the object itself
+  const std::string& source() const { return source_; }
+  std::string keyPath(const std::string& key) const;  // "path.key", escaped and cut
+
   // "source: path.key" for messages about a value that passed its own check but not a relation.
   std::string where(const std::string& key) const;
   // "path.key = <the value as written>", for naming a second value in a message about the first.
@@ -69,7 +73,6 @@ class JsonReader {
 
  private:
   const nlohmann::json& value(const std::string& key) const;  // throws when the key is missing
-  std::string keyPath(const std::string& key) const;          // "path.key", escaped and cut
 
   const nlohmann::json& object_;
   std::string source_;

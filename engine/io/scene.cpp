@@ -101,6 +101,28 @@ void readCueShot(const JsonReader& shot, physics::CueShot* cue) {
   }
 }
 
+// The scene's table or ball set under `key`: a built-in name, a file (relative to the scene's
+// folder) or the file's content in place. `embedded` becomes what the self-contained document
+// holds there: the name, or the object.
+template <typename Asset>
+Asset sceneAsset(const JsonReader& scene, const char* key, const std::string& kind,
+                 nlohmann::json* embedded,
+                 Asset (*from_json)(const nlohmann::json&, const std::string&),
+                 Asset (*builtin)(const std::string&)) {
+  const bool in_place = embedded->is_object();
+  const std::string name = in_place ? "" : scene.text(key);
+  try {
+    if (in_place) return from_json(*embedded, scene.where(key));
+    if (!isFile(name)) return builtin(name);
+    const std::string path = resolvePath(scene.source(), name);
+    *embedded = JsonReader::parseFile(path);
+    return from_json(*embedded, path);
+  } catch (const std::invalid_argument& e) {
+    scene.reject(
+        key, "a built-in " + kind + " name, a .json file or a " + kind + " object: " + e.what());
+  }
+}
+
 }  // namespace
 
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
@@ -113,18 +135,11 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
   }
   Scene result;
   result.source = source;
-  const std::string table = scene.text("table");
-  try {
-    result.table = isFile(table) ? loadTable(resolvePath(source, table)) : builtinTable(table);
-  } catch (const std::invalid_argument& e) {
-    scene.reject("table", std::string("a built-in table name or a .json file: ") + e.what());
-  }
-  const std::string set = scene.text("ball_set");
-  try {
-    result.ball_set = isFile(set) ? loadBallSet(resolvePath(source, set)) : builtinBallSet(set);
-  } catch (const std::invalid_argument& e) {
-    scene.reject("ball_set", std::string("a built-in ball set name or a .json file: ") + e.what());
-  }
+  result.document = document;
+  result.table = sceneAsset<Table>(scene, "table", "table", &result.document["table"],
+                                   tableFromJson, builtinTable);
+  result.ball_set = sceneAsset<BallSet>(scene, "ball_set", "ball set", &result.document["ball_set"],
+                                        ballSetFromJson, builtinBallSet);
   // Where the table meets the balls: its pockets must swallow a ball of this radius that passes
   // their facings (a table file alone cannot say; engine/io/table.h).
   try {
@@ -207,6 +222,7 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
   }
   result.shot.heading_rad = heading_rad;
   readCueShot(shot, &result.shot);
+  if (own_shot) result.document["shot"] = own_shot->json();
   if (scene.has("physics")) result.overrides = readPhysicsOverrides(scene.object("physics"));
   validateScenePhysics(simulationParamsFor(result), cueStrikeParamsFor(result), source, [&] {
     return "the values of table '" + result.table.name + "' (" + result.table.source +

@@ -2,14 +2,15 @@
 // (docs/scenes.md), and its simulation through the event loop.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "engine/io/ball_set.h"
 #include "engine/io/rack.h"
 #include "engine/io/scene_physics.h"
-#include "engine/sim/shot_simulator.h"
 #include "engine/io/table.h"
+#include "engine/sim/shot_simulator.h"
 #include "physics/cue_strike.h"
 
 namespace baize::engine {
@@ -22,6 +23,11 @@ struct Scene {
   std::string cue_ball;           // the ball the cue strikes
   physics::CueShot shot;          // heading already resolved from an aim at a ball
   PhysicsOverrides overrides;     // the file's "physics" object; empty: the defaults
+  // The scene as read, made self-contained: a table or ball-set file's content in place of its
+  // path (built-in names stay names) and a batch line's or suite case's own shot in place of the
+  // scene's. Reading it again gives this scene, bit for bit; result files embed it. A program that
+  // changes the fields above after reading does not change this.
+  nlohmann::json document;
 };
 
 // Reads a scene file. Throws std::invalid_argument naming the file, the key and the value for an
@@ -29,9 +35,10 @@ struct Scene {
 // pockets would let the set's balls through (checkCapturesCoverOpenings), overlapping balls, a
 // ball off the table, an impossible shot or a physics override out of its range.
 Scene loadScene(const std::string& path);
-// The same from a parsed document named `source`. Given `own_shot` (a suite case's or a batch
-// line's own "shot", which replaces the scene's whole), the shot is read from it, so that a refusal
-// about it names where it stands.
+// The same from a parsed document named `source`. Its "table" and "ball_set" may also be objects:
+// a table or ball-set file's content given in place (as a result file's embedded scene has them).
+// Given `own_shot` (a suite case's or a batch line's own "shot", which replaces the scene's whole),
+// the shot is read from it, so that a refusal about it names where it stands.
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
                     const JsonReader* own_shot = nullptr);
 

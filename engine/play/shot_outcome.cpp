@@ -1,20 +1,9 @@
 #include "engine/play/shot_outcome.h"
 
 #include <stdexcept>
+#include <utility>
 
 namespace baize::engine {
-
-const char* foulName(Foul foul) {
-  switch (foul) {
-    case Foul::None:
-      return "none";
-    case Foul::CueBallPocketed:
-      return "cue ball pocketed";
-    case Foul::NoBallHit:
-      return "no ball hit";
-  }
-  return "?";
-}
 
 const FinalBall* ShotOutcome::ball(const std::string& id) const {
   for (const FinalBall& b : final_balls) {
@@ -72,6 +61,34 @@ ShotOutcome shotOutcome(const SceneRun& run, const std::string& cue_ball) {
     outcome.foul = Foul::NoBallHit;
   }
   return outcome;
+}
+
+ShotResult shotResult(Scene scene, const SceneRun& run, bool with_recording) {
+  const ShotOutcome outcome = shotOutcome(run, scene.cue_ball);
+  ShotResult r;
+  r.source = scene.source;
+  r.scene = std::move(scene);
+  r.params = simulationParamsFor(r.scene);
+  r.physics = physicsJson(r.params, cueStrikeParamsFor(r.scene));
+  r.end_time_s = run.result.end_time_s;
+  r.first_ball_hit = outcome.first_hit;
+  r.cushions_before_first_hit = outcome.cushions_before_first_hit;
+  r.pocketed = outcome.pocketed;
+  r.foul = outcome.foul;
+  r.event_count = outcome.events;
+  for (const FinalBall& b : outcome.final_balls) {
+    r.final_positions_m.push_back(b.pocketed ? std::nullopt : std::optional(b.position_m));
+    r.cushion_contacts.push_back(b.cushion_contacts);
+  }
+  r.predictions_solved = run.result.predictions;
+  r.predictions_skipped = run.result.skipped_predictions;
+  if (with_recording) {
+    r.events = run.result.events;
+    if (run.result.trajectories.size() == run.ball_ids.size()) {
+      r.trajectories = run.result.trajectories;
+    }
+  }
+  return r;
 }
 
 }  // namespace baize::engine

@@ -1,6 +1,7 @@
 // What a shot did, in the terms players and referees use: the balls pocketed (and where), the first
 // ball the cue ball hit, the cushions it touched before that, where it stopped, and whether the
-// shot was a foul. Read from a SceneRun's events; no physics of its own.
+// shot was a foul. Read from a SceneRun's events; no physics of its own. PocketedBall and Foul are
+// declared with the result file that records them (engine/io/result_file.h).
 #pragma once
 
 #include <Eigen/Core>
@@ -8,14 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "engine/io/result_file.h"
 #include "engine/io/scene.h"
 
 namespace baize::engine {
-
-struct PocketedBall {
-  std::string ball;
-  int pocket = 0;  // index into Table::pockets (counterclockwise from the bottom-left corner)
-};
 
 struct FinalBall {
   std::string id;
@@ -23,14 +20,6 @@ struct FinalBall {
   bool pocketed = false;
   int cushion_contacts = 0;  // its cushion and jaw contacts over the whole shot
 };
-
-enum class Foul {
-  None,
-  CueBallPocketed,  // the cue ball fell into a pocket
-  NoBallHit,        // the cue ball touched no other ball
-};
-
-const char* foulName(Foul foul);
 
 struct ShotOutcome {
   std::string cue_ball;
@@ -49,6 +38,12 @@ struct ShotOutcome {
   const FinalBall* ball(const std::string& id) const;  // nullptr for a ball not in the scene
   bool wasPocketed(const std::string& id) const;
 };
+
+// The result file of a run of `scene` (engine/io/result_file.h): the scene as read, the parameters
+// it ran with, the outcome and, when `with_recording`, the run's events with their states and its
+// trajectories (when it recorded them). The scene is taken by value: a caller done with it moves it
+// in (a batch writes thousands of results a second).
+ShotResult shotResult(Scene scene, const SceneRun& run, bool with_recording);
 
 // The outcome of a run whose cue ball is `cue_ball`. Throws std::invalid_argument when the run has
 // no ball of that id.

@@ -14,9 +14,16 @@ python3 "$root/tools/batch_shots.py" 300 --seed 5 >"$work/shots.jsonl"
 "$baize" batch "$work/shots.jsonl" --threads 1 >"$work/one.jsonl" || fail "--threads 1 exited $?"
 "$baize" batch "$work/shots.jsonl" --threads 2 >"$work/two.jsonl" || fail "--threads 2 exited $?"
 cmp -s "$work/one.jsonl" "$work/two.jsonl" || fail "1 and 2 threads give different output"
-# Standard input gives the same results too.
+# Standard input gives the same results too, but for where each scene came from ("source").
 "$baize" batch --threads 2 <"$work/shots.jsonl" >"$work/stdin.jsonl" || fail "stdin exited $?"
-cmp -s "$work/one.jsonl" "$work/stdin.jsonl" || fail "standard input gives different output"
+python3 - "$work/one.jsonl" "$work/stdin.jsonl" "$work/shots.jsonl" <<'PY' || fail "standard input gives different output"
+import json, sys
+one, stdin = ([json.loads(l) for l in open(f)] for f in sys.argv[1:3])
+assert len(one) == len(stdin) > 0
+for n, (a, b) in enumerate(zip(one, stdin), start=1):
+    assert a.pop("source") == "%s:%d" % (sys.argv[3], n) and b.pop("source") == "stdin:%d" % n
+    assert a == b, (a, b)
+PY
 
 python3 - "$work/shots.jsonl" "$work/one.jsonl" <<'PY'
 import json, sys
@@ -26,18 +33,23 @@ assert len(results) == len(shots), (len(results), len(shots))
 for n, (shot, r) in enumerate(zip(shots, results), start=1):
     assert r["line"] == n and r["id"] == shot["id"], r
     assert "error" not in r, r
-    assert set(r["final_m"]) == {"cue", "1"}, r
+    assert r["format"] == "baize-result" and r["version"] == 1, r
+    assert r["source"] == "%s:%d" % (sys.argv[1], n), r["source"]
+    # The scene is embedded as read (the line without its id): a result is self-contained.
+    assert r["scene"] == {k: v for k, v in shot.items() if k != "id"}, r["scene"]
+    final = r["final_positions_m"]
+    assert set(final) == {"cue", "1"} == set(r["cushion_contacts"]), r
     pocketed = {p["ball"] for p in r["pocketed"]}
     # A pocketed ball has no final position; one on the table has one inside the cushions.
-    for ball, at in r["final_m"].items():
+    for ball, at in final.items():
         assert (at is None) == (ball in pocketed), r
         if at is not None:
             assert abs(at[0]) <= 1.27 and abs(at[1]) <= 0.635, r
-    assert r["cue_ball_pocketed"] == ("cue" in pocketed), r
-    foul = "cue ball pocketed" if r["cue_ball_pocketed"] else (
-        "no ball hit" if r["first_hit"] is None else "none")
+    foul = "cue ball pocketed" if "cue" in pocketed else (
+        "no ball hit" if r["first_ball_hit"] is None else "none")
     assert r["foul"] == foul, r
-    assert r["first_hit"] in (None, "1") and r["events"] >= 1, r
+    assert r["first_ball_hit"] in (None, "1") and r["event_count"] >= 1, r
+    assert "trajectories" not in r and "events" not in r, r
 PY
 
 # Bad lines: each gets an error result naming its line, the others still run, exit status 1.
@@ -67,8 +79,11 @@ r = [json.loads(l) for l in open(sys.argv[1])]
 assert [x["line"] for x in r] == [1, 2, 4, 5, 6, 7, 8, 9], [x["line"] for x in r]  # line 3 is blank
 ok = {x["line"]: x for x in r if "error" not in x}
 assert set(ok) == {1, 5}, r
-assert ok[1]["id"] == "first" and ok[1]["first_hit"] == "1"
-assert ok[5]["id"] == "by-path" and ok[5]["first_hit"] == "1"
+assert ok[1]["id"] == "first" and ok[1]["first_ball_hit"] == "1"
+assert ok[5]["id"] == "by-path" and ok[5]["first_ball_hit"] == "1"
+# A line naming a scene file embeds that file's scene with the line's own shot.
+assert ok[5]["scene"]["shot"] == {"aim_at": "1", "speed_mps": 2} and ok[5]["scene"]["table"] == "pool-9ft"
+assert all(x["format"] == "baize-result" and x["version"] == 1 for x in r), r
 err = {x["line"]: x["error"] for x in r if "error" in x}
 assert "mixed.jsonl:2: not valid JSON" in err[2], err[2]
 assert r[1]["id"] == 7 if "id" in r[1] else True

@@ -54,6 +54,28 @@ python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); del s["physics"]; j
 cmp -s "$work/slow.png" "$work/slow-from-result.png" || fail "the result was drawn with the scene's new cloth"
 cmp -s "$work/slow.png" "$work/a.png" && fail "test setup: the slower cloth draws the same picture"
 
+# A result is self-contained: it renders after its scene and the scene's own table file are gone.
+mkdir "$work/own"
+cp "$root/assets/tables/pool-9ft.json" "$work/own/my-table.json"
+python3 - "$scene" "$work/own/scene.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+s["table"] = "my-table.json"
+json.dump(s, open(sys.argv[2], "w"))
+PY
+"$baize" render "$work/own/scene.json" --png "$work/own.png" --width 640 --height 320 >/dev/null
+"$baize" simulate "$work/own/scene.json" --json "$work/own-result.json" >/dev/null
+rm -r "$work/own"
+"$baize" render "$work/own-result.json" --png "$work/own-from-result.png" --width 640 --height 320 \
+  >/dev/null || fail "render of a result whose scene is deleted exited $?"
+cmp -s "$work/own.png" "$work/own-from-result.png" || fail "the self-contained result draws another picture"
+# A line of baize batch is a result too (no trajectories: its embedded scene is simulated again).
+python3 -c 'import json,sys; print(json.dumps(json.load(open(sys.argv[1]))))' "$scene" >"$work/one-line.jsonl"
+"$baize" batch "$work/one-line.jsonl" >"$work/line-result.json" || fail "batch exited $?"
+"$baize" render "$work/line-result.json" --png "$work/from-line.png" --width 640 --height 320 >/dev/null ||
+  fail "render of a batch line exited $?"
+cmp -s "$work/a.png" "$work/from-line.png" || fail "a batch line and its scene draw different pictures"
+
 # --at: a picture of the shot under way differs from the end; the angled view differs from the top.
 "$baize" render "$scene" --png "$work/at.png" --width 640 --height 320 --at 0.05 >/dev/null || fail "--at exited $?"
 cmp -s "$work/a.png" "$work/at.png" && fail "--at 0.05 drew the end of the shot"
@@ -102,9 +124,10 @@ expect_refused "--png" "$work/a-file/x.png" render "$scene" --png "$work/a-file/
 expect_refused "--png" "$work/x.png" render "$scene"
 expect_refused "--width" "$work/y.png" simulate "$scene" --png "$work/y.png" --width 0
 expect_refused "--width" "$work/y.png" simulate "$scene" --width 0  # checked without a picture too
+# A result written before the format was versioned (it names its scene by path) is named as such.
 echo '{"scene": "nowhere.json", "trajectories": {}}' >"$work/bad-result.json"
-expect_refused "bad-result.json: the result.s scene: nowhere.json" "$work/x.png" render "$work/bad-result.json" \
-  --png "$work/x.png"
+expect_refused 'bad-result.json: format is missing: it must be "baize-result"' "$work/x.png" \
+  render "$work/bad-result.json" --png "$work/x.png"
 # A result edited by hand: one change each to the saved result above, each refused naming the key.
 edit_result() {  # edit_result NAME PYTHON-STATEMENT-ON-r
   python3 - "$work/result.json" "$work/$1.json" "$2" <<'PY'
@@ -119,12 +142,15 @@ while IFS='|' read -r name change needle; do
   edit_result "$name" "$change"
   expect_refused "$needle" "$work/x.png" render "$work/$name.json" --png "$work/x.png"
 done <<'ROWS'
-far|r["trajectories"]["cue"][0]["position_m"] = [1e6, 1e6]|trajectories.cue\[0\].position_m
-unknown|r["zzz"] = 1|zzz: an unknown key
-table|r["table"] = "snooker-12ft"|table: value "snooker-12ft"
-extra|r["trajectories"]["ghost"] = r["trajectories"]["cue"]|trajectories: it must hold exactly
+far|r["trajectories"]["cue"][0]["position_m"] = [1e6, 1e6]|trajectories.cue\[0\].position_m = \[1000000.0,1000000.0\] is not allowed
+fast|r["trajectories"]["cue"][0]["velocity_mps"] = [1e6, 0, 0]|trajectories.cue\[0\].velocity_mps = \[1000000.0,0,0\] is not allowed: each component must be of magnitude at most 20 m/s
+endless|r["end_time_s"] = 1e9|end_time_s = 1000000000.0 is not allowed: a shot must end within 3600 s
+unknown|r["zzz"] = 1|zzz = 1 is not allowed: unknown key
+version|r["version"] = 2|version = 2 is not allowed: this baize reads version 1
+table|r["scene"]["table"] = "mine.json"|scene.table = "mine.json" is not allowed: a result's scene holds its table
+extra|r["trajectories"]["ghost"] = r["trajectories"]["cue"]|trajectories.ghost = .* is not allowed: unknown ball
 physics|r["physics"]["max_events"] = -1|physics.max_events = -1 is not allowed
-late|r["end_time_s"] = -1|end_time_s: it must be >= 0
+late|r["end_time_s"] = -1|end_time_s = -1 is not allowed: it must be a finite number >= 0
 ROWS
 
 # bench render, smoke size: one line with the median.

@@ -22,27 +22,30 @@ done
 python3 - "$work/break.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
+assert d["format"] == "baize-result" and d["version"] == 1, (d["format"], d["version"])
+assert d["source"].endswith("9-ball-break.json") and d["scene"]["rack"] == {"name": "9-ball"}, d["scene"]
 times = [e["time_s"] for e in d["events"]]
 assert times == sorted(times), "events in time order"
-assert len(d["final"]) == 10, len(d["final"])
+assert d["event_count"] == len(d["events"]), d["event_count"]
+final = d["final_positions_m"]
+assert set(final) == {"cue"} | {str(i) for i in range(1, 10)}, final
 assert d["first_ball_hit"] == "1", d["first_ball_hit"]
-assert {b["id"] for b in d["final"]} == {"cue"} | {str(i) for i in range(1, 10)}
-# A pocketed ball says which pocket, matching its pocket event; a ball on the table names none.
-for b in d["final"]:
-    falls = [e for e in d["events"] if e["type"] == "pocket" and e["ball"] == b["id"]]
-    assert b["pocketed"] == bool(falls), b
-    assert (b.get("pocket") == falls[0]["index"]) if falls else "pocket" not in b, b
-assert any(b["pocketed"] for b in d["final"]), "the break pockets a ball"
+# A pocketed ball is listed with its pocket, matching its pocket event, and has no final position.
 names = ["bottom-left", "bottom-middle", "bottom-right", "top-right", "top-middle", "top-left"]
-for b in d["final"]:
-    assert b.get("pocket_name") == (names[b["pocket"]] if b["pocketed"] else None), b
-    contacts = [e for e in d["events"] if e["type"] in ("cushion", "jaw") and e["ball"] == b["id"]]
-    assert b["cushion_contacts"] == len(contacts), b
+pocketed = {p["ball"]: p["pocket"] for p in d["pocketed"]}
+for ball in final:
+    falls = [e for e in d["events"] if e["type"] == "pocket" and e["ball"] == ball]
+    assert (ball in pocketed) == bool(falls) == (final[ball] is None), ball
+    if falls:
+        assert pocketed[ball] == names[falls[0]["index"]], (ball, pocketed)
+    contacts = [e for e in d["events"] if e["type"] in ("cushion", "jaw") and e["ball"] == ball]
+    assert d["cushion_contacts"][ball] == len(contacts), ball
+assert pocketed, "the break pockets a ball"
 assert d["foul"] == "none", d["foul"]
 assert d["predictions"]["solved"] > 0 and d["predictions"]["skipped"] > 0, d["predictions"]
 assert "samples" not in d
 # Trajectories: per ball, pieces starting at 0 in time order; the cue ball's first piece is the strike.
-assert set(d["trajectories"]) == {b["id"] for b in d["final"]}
+assert set(d["trajectories"]) == set(final)
 for pieces in d["trajectories"].values():
     starts = [q["start_time_s"] for q in pieces]
     assert starts[0] == 0 and starts == sorted(starts), starts
@@ -65,20 +68,21 @@ import json, sys
 d = json.load(open(sys.argv[1]))
 s = d["samples"]
 assert [(x["ball"], x["time_s"]) for x in s] == [("cue", 0), ("9", 1000), ("cue", 0.05), ("6", 1000)], s
-final = {b["id"]: b for b in d["final"]}
+final = d["final_positions_m"]
+pocketed = {p["ball"]: p["pocket"] for p in d["pocketed"]}
 line = [l for l in sys.argv[2].splitlines() if l.startswith("sample cue@0:")][0]
 expected = "sample cue@0: position [%.4f, %.4f] m, velocity [%.4f, %.4f, %.4f] m/s" % (
     *s[0]["position_m"], *s[0]["velocity_mps"])
 assert line.startswith(expected), (line, expected)
 assert s[0]["position_m"] == d["trajectories"]["cue"][0]["position_m"], s[0]
 assert s[0]["velocity_mps"] == d["trajectories"]["cue"][0]["velocity_mps"], s[0]
-assert not final["9"]["pocketed"] and not s[1]["pocketed"], (final["9"], s[1])
-assert s[1]["position_m"] == final["9"]["position_m"] and s[1]["velocity_mps"] == [0, 0, 0], s[1]
+assert final["9"] is not None and not s[1]["pocketed"], (final["9"], s[1])
+assert s[1]["position_m"] == final["9"] and s[1]["velocity_mps"] == [0, 0, 0], s[1]
 # The 6 falls in the break: its sample says where and since when, as its pocket event does.
 fall = [e for e in d["events"] if e["type"] == "pocket" and e["ball"] == "6"][0]
-assert s[3]["pocketed"] and s[3]["pocket_name"] == final["6"]["pocket_name"], s[3]
+assert s[3]["pocketed"] and s[3]["pocket"] == pocketed["6"], s[3]
 assert s[3]["fell_at_s"] == fall["time_s"] and "velocity_mps" not in s[3], s[3]
-assert "sample 6@1000: in the %s pocket since" % final["6"]["pocket_name"] in sys.argv[2]
+assert "sample 6@1000: in the %s pocket since" % pocketed["6"] in sys.argv[2]
 # Before the first collision the cue ball (struck below centre: it slides, its slip along +x)
 # slows at mu_s g: v = v0 - mu_s g t, x = x0 + v0 t - mu_s g t^2 / 2, with the run's mu_s and
 # g = 9.81 m/s^2 (physics::ClothParams).

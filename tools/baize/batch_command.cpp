@@ -7,13 +7,17 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "engine/io/json_reader.h"
+#include "engine/io/result_file.h"
 #include "engine/io/scene.h"
 #include "engine/play/shot_outcome.h"
 #include "engine/play/shot_suite.h"
+#include "engine/sim/cushion_solve_ahead.h"
 #include "tools/baize/cli_errors.h"
 
 namespace baize::tools {
@@ -34,27 +38,6 @@ struct InputLine {
   long number = 0;  // 1-based line number in the input
   std::string text;
 };
-
-nlohmann::json outcomeJson(const engine::ShotOutcome& outcome, const engine::SceneRun& run) {
-  nlohmann::json out;
-  out["first_hit"] = outcome.first_hit ? nlohmann::json(*outcome.first_hit) : nlohmann::json();
-  out["pocketed"] = nlohmann::json::array();
-  for (const engine::PocketedBall& p : outcome.pocketed) {
-    out["pocketed"].push_back({{"ball", p.ball}, {"pocket", engine::pocketNames().at(p.pocket)}});
-  }
-  out["cue_ball_pocketed"] = outcome.cue_ball_pocketed;
-  out["cushions_before_first_hit"] = outcome.cushions_before_first_hit;
-  out["foul"] = engine::foulName(outcome.foul);
-  out["events"] = outcome.events;
-  out["end_time_s"] = run.result.end_time_s;
-  nlohmann::json final_positions = nlohmann::json::object();
-  for (const engine::FinalBall& b : outcome.final_balls) {
-    final_positions[b.id] =
-        b.pocketed ? nlohmann::json() : nlohmann::json::array({b.position_m.x(), b.position_m.y()});
-  }
-  out["final_m"] = final_positions;
-  return out;
-}
 
 // The scene of one line: a scene object, or {"scene": path or object, "shot": {...}}; either may
 // carry an "id", which is echoed and otherwise ignored.
@@ -85,20 +68,27 @@ engine::Scene lineScene(nlohmann::json document, const std::string& source,
 // One result line; `failed` is set when the line could not be run.
 std::string runLine(const InputLine& line, const std::string& input_name, const std::string& folder,
                     bool* failed) {
-  nlohmann::json out;
-  out["line"] = line.number;
   const std::string source = input_name + ":" + std::to_string(line.number);
+  std::optional<nlohmann::json> id;
+  nlohmann::json out;
   try {
     const nlohmann::json document =
         engine::JsonReader::parseText(line.text, source, "each line must be one JSON object");
-    if (document.is_object() && document.contains("id")) out["id"] = document.at("id");
-    const engine::Scene scene = lineScene(document, source, folder);
+    if (document.is_object() && document.contains("id")) id = document.at("id");
+    engine::Scene scene = lineScene(document, source, folder);
     const engine::SceneRun run = engine::runScene(scene);
-    const nlohmann::json result = outcomeJson(engine::shotOutcome(run, scene.cue_ball), run);
-    out.update(result);
+    engine::ShotResult result = engine::shotResult(std::move(scene), run, /*with_recording=*/false);
+    result.line = line.number;
+    result.id = id;
+    out = engine::resultJson(result);
     *failed = false;
   } catch (const std::exception& e) {
-    out["error"] = e.what();
+    // Not a result: the format and version say whose line it is, "error" that the shot failed.
+    out = {{"format", engine::kResultFormat},
+           {"version", engine::kResultVersion},
+           {"line", line.number},
+           {"error", e.what()}};
+    if (id) out["id"] = *id;
     *failed = true;
   }
   // Replacing bytes that are not UTF-8 (a parse error quotes the raw input, a file name may hold

@@ -27,11 +27,12 @@ void runRender(const RenderFlags& flags) {
 
 void addRenderCommand(CLI::App& parent) {
   auto flags = std::make_shared<RenderFlags>();
-  CLI::App* command = parent.add_subcommand(
-      "render", "Draw a shot (a scene or a result of 'baize simulate --json') as PNG pictures");
+  CLI::App* command =
+      parent.add_subcommand("render", "Draw a shot (a scene or a result file) as PNG pictures");
   command
       ->add_option("input", flags->input,
-                   "a scene file (docs/scenes.md) or a result of 'baize simulate --json'")
+                   "a scene file (docs/scenes.md) or a result file of 'baize simulate --json' or "
+                   "'baize batch' (docs/results.md)")
       ->required();
   addPictureFlags(*command, flags->pictures);
   command->callback([flags] {

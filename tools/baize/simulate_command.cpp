@@ -3,13 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "engine/io/result_file.h"
 #include "engine/io/scene.h"
 #include "engine/play/shot_outcome.h"
 #include "engine/io/table.h"
@@ -27,13 +27,6 @@ struct SimulateFlags {
   std::vector<std::string> samples;  // "BALL@TIME_S"
   PictureFlags pictures;
 };
-
-nlohmann::json stateJson(const physics::BallState& s) {
-  return {{"position_m", {s.position.x(), s.position.y()}},
-          {"velocity_mps", {s.velocity.x(), s.velocity.y(), s.velocity.z()}},
-          {"angular_velocity_radps",
-           {s.angular_velocity.x(), s.angular_velocity.y(), s.angular_velocity.z()}}};
-}
 
 // A --sample request: a ball of the scene and a time from the strike on.
 struct SampleRequest {
@@ -126,79 +119,39 @@ void runSimulate(const SimulateFlags& flags) {
   std::cout << "events: " << r.events.size() << ", at rest after " << r.end_time_s << " s\n";
   std::cout << "predictions: " << r.predictions << " solved, " << r.skipped_predictions
             << " skipped\n";
-  nlohmann::json sampled = nlohmann::json::array();
+  std::vector<engine::ResultSample> sampled;
   for (const SampleRequest& request : samples) {
     const engine::Trajectory& path = r.trajectories.at(request.ball);
-    const physics::BallState s = engine::sampleTrajectory(params.cloth, path, request.time_s);
-    nlohmann::json entry = {{"ball", id(request.ball)}, {"time_s", request.time_s}};
+    engine::ResultSample sample;
+    sample.ball = id(request.ball);
+    sample.time_s = request.time_s;
+    sample.state = engine::sampleTrajectory(params.cloth, path, request.time_s);
     // A pocketed ball is in its pocket from the piece that says so on; its state is where it fell.
-    const engine::TrajectoryPiece* fell = nullptr;
     for (const engine::TrajectoryPiece& piece : path) {
-      if (piece.pocketed && piece.start_time_s <= request.time_s) fell = &piece;
+      if (piece.pocketed && piece.start_time_s <= request.time_s) {
+        sample.pocketed = true;
+        sample.pocket = r.final_balls.at(request.ball).pocket;
+        sample.fell_at_s = piece.start_time_s;
+      }
     }
+    const auto& s = sample.state;
     std::cout << "sample " << request.text << ": ";
-    if (fell) {
-      const std::string& pocket = pocket_names.at(r.final_balls.at(request.ball).pocket);
-      std::cout << "in the " << pocket << " pocket since " << fell->start_time_s << " s\n";
-      entry["pocketed"] = true;
-      entry["pocket_name"] = pocket;
-      entry["fell_at_s"] = fell->start_time_s;
+    if (sample.pocketed) {
+      std::cout << "in the " << pocket_names.at(sample.pocket) << " pocket since "
+                << sample.fell_at_s << " s\n";
     } else {
       std::cout << "position [" << s.position.x() << ", " << s.position.y() << "] m, velocity "
                 << vectorText(s.velocity) << " m/s, angular velocity "
                 << vectorText(s.angular_velocity) << " rad/s\n";
-      entry.update(stateJson(s));
-      entry["pocketed"] = false;
     }
-    sampled.push_back(entry);
+    sampled.push_back(sample);
   }
   std::cout << "wall time: " << std::setprecision(3) << wall_ms << " ms\n";
 
   if (json_file) {
-    nlohmann::json out;
-    out["scene"] = flags.scene;
-    // Where `baize render` finds the table, balls and cloth again, whatever its working directory.
-    out["scene_path"] = std::filesystem::absolute(flags.scene).lexically_normal().string();
-    out["table"] = scene.table.name;
-    out["end_time_s"] = r.end_time_s;
-    out["first_ball_hit"] = outcome.first_hit.value_or("none");
-    out["pocketed"] = nlohmann::json::array();
-    for (const engine::PocketedBall& p : outcome.pocketed) out["pocketed"].push_back(p.ball);
-    out["foul"] = engine::foulName(outcome.foul);
-    out["predictions"] = {{"solved", r.predictions}, {"skipped", r.skipped_predictions}};
-    if (!samples.empty()) out["samples"] = sampled;
-    out["physics"] = physics;  // the parameters the shot ran with, in the scene format's keys
-    for (const engine::Event& e : r.events) {
-      nlohmann::json event = {
-          {"time_s", e.time_s}, {"type", engine::eventKindName(e.kind)}, {"ball", id(e.ball)}};
-      if (e.other >= 0) event["other"] = id(e.other);
-      if (e.index >= 0) event["index"] = e.index;
-      for (const auto& s : e.before) event["before"].push_back(stateJson(s));
-      for (const auto& s : e.after) event["after"].push_back(stateJson(s));
-      out["events"].push_back(event);
-    }
-    for (std::size_t i = 0; i < r.final_balls.size(); ++i) {
-      nlohmann::json ball = stateJson(r.final_balls[i].state);
-      ball["id"] = id(static_cast<int>(i));
-      ball["pocketed"] = r.final_balls[i].pocketed;
-      if (r.final_balls[i].pocketed) {
-        ball["pocket"] = r.final_balls[i].pocket;
-        ball["pocket_name"] = pocket_names.at(r.final_balls[i].pocket);
-      }
-      ball["cushion_contacts"] = outcome.final_balls[i].cushion_contacts;
-      out["final"].push_back(ball);
-      // The exact path: from each piece's start the ball moves in closed form
-      // (physics/cloth_motion.h `advance`) from that state until the next piece.
-      nlohmann::json pieces = nlohmann::json::array();
-      for (const engine::TrajectoryPiece& piece : r.trajectories[i]) {
-        nlohmann::json q = stateJson(piece.state);
-        q["start_time_s"] = piece.start_time_s;
-        q["pocketed"] = piece.pocketed;
-        pieces.push_back(q);
-      }
-      out["trajectories"][id(static_cast<int>(i))] = pieces;
-    }
-    json_file->stream() << std::setprecision(17) << out.dump(2) << '\n';
+    engine::ShotResult result = engine::shotResult(scene, run, /*with_recording=*/true);
+    result.samples = sampled;
+    json_file->stream() << engine::resultJson(result).dump(2) << '\n';
     json_file->commit();
   }
   if (flags.pictures.wanted()) writePictures(render::shotRecordOf(scene, run), flags.pictures);
@@ -212,7 +165,7 @@ void addSimulateCommand(CLI::App& parent) {
       "simulate", "Strike a scene's cue ball and simulate the shot until every ball is at rest");
   command->add_option("scene", flags->scene, "the scene file (JSON, see docs/scenes.md)")
       ->required();
-  command->add_option("--json", flags->json_path, "also write the events and final states here")
+  command->add_option("--json", flags->json_path, "also write the result file here (docs/results.md)")
       ->check(notEmpty());
   command->add_option("--sample", flags->samples,
                       "print (and with --json write) BALL's state at TIME_S seconds after the "

@@ -315,7 +315,7 @@ int main(int argc, char** argv) {
   baize::tools::ViewFlags flags;
   CLI::App app{"baize-view: play a shot in a window; on a scene, aim and strike again",
                "baize-view"};
-  app.add_option("input", flags.input, "a scene file or a result of 'baize simulate --json'")
+  app.add_option("input", flags.input, "a scene file or a result file (docs/results.md)")
       ->required();
   app.add_option("--width", flags.width_px, "window width, px (default 1280)");
   app.add_option("--height", flags.height_px, "window height, px (default 720)");

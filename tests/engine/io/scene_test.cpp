@@ -301,6 +301,49 @@ TEST(Scene, DuplicateKeysInAFileAreRefused) {
   std::filesystem::remove_all(folder);
 }
 
+// A scene's document is made self-contained: a table or ball-set file's content in place of its
+// path (a built-in name stays), a line's own shot in place of the scene's. Read again, it gives the
+// same scene bit for bit; a table or ball set given in place is read (and refused) as its file is.
+TEST(Scene, TheDocumentIsSelfContainedAndReadsBackToTheSameScene) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                       ("baize_scene_document_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::filesystem::copy_file(assetsDirectory() + "/tables/pool-8ft.json", folder / "mine.json",
+                             std::filesystem::copy_options::overwrite_existing);
+  nlohmann::json doc = nineBall();
+  doc["table"] = "mine.json";
+  const nlohmann::json own_shot = {{"aim_at", "2"}, {"speed_mps", 3}, {"side", 0.1}};
+  const nlohmann::json line = {{"shot", own_shot}};
+  const JsonReader own(line.at("shot"), "line", "shot");
+  const Scene scene = sceneFromJson(doc, (folder / "scene.json").string(), &own);
+  std::filesystem::remove_all(folder);
+  EXPECT_EQ(scene.document.at("table"),
+            JsonReader::parseFile(assetsDirectory() + "/tables/pool-8ft.json"));
+  EXPECT_EQ(scene.document.at("ball_set"), "pool");
+  EXPECT_EQ(scene.document.at("shot"), own_shot);
+  const Scene again = sceneFromJson(scene.document, "again.json");
+  EXPECT_EQ(again.document, scene.document);
+  EXPECT_EQ(again.table.name, scene.table.name);
+  EXPECT_EQ(again.table.length_m, scene.table.length_m);
+  ASSERT_EQ(again.balls.size(), scene.balls.size());
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    EXPECT_EQ(again.balls[i].id, scene.balls[i].id);
+    EXPECT_EQ(again.balls[i].position_m, scene.balls[i].position_m);
+  }
+  EXPECT_EQ(std::memcmp(&again.shot.heading_rad, &scene.shot.heading_rad, sizeof(double)), 0);
+  EXPECT_EQ(again.shot.side_offset, 0.1);
+
+  nlohmann::json bad = scene.document;
+  bad["table"]["length_m"] = -1;
+  EXPECT_THAT(sceneError(bad), HasSubstr("test.json: table = {"));
+  EXPECT_THAT(sceneError(bad), HasSubstr("a built-in table name, a .json file or a table object: "
+                                         "test.json: table: length_m = -1 is not allowed"));
+  bad = scene.document;
+  bad["ball_set"] = {{"name", "none"}};
+  EXPECT_THAT(sceneError(bad), HasSubstr("a built-in ball set name, a .json file or a ball set "
+                                         "object: test.json: ball_set: "));
+}
+
 // A lone cue ball at [x, 0] struck along +x at its natural-roll height (0.4 R above the centre,
 // level cue), so it rolls from the start; `physics` is the scene's "physics" object, if any.
 nlohmann::json lonePoolBall(double x, double speed_mps, const nlohmann::json& physics = nullptr) {
