@@ -143,7 +143,7 @@ ShotRecord shotRecordFromResultJson(const nlohmann::json& result, const std::str
   if (result.contains("physics")) {
     const engine::PhysicsOverrides ran =
         engine::readPhysicsOverrides(engine::JsonReader(result.at("physics"), source, "physics"));
-    engine::applyPhysicsOverrides(ran, &params);
+    engine::applyPhysicsOverrides(ran, engine::modelDefaultsFor(scene), &params);
     physics::CueStrikeParams cue = engine::cueStrikeParamsFor(scene);
     engine::applyPhysicsOverrides(ran, &cue);
     engine::validateScenePhysics(params, cue, source,

@@ -64,6 +64,11 @@ class JsonReader {
   // and "inf"), bytes that are not UTF-8 replaced, cut after 200 characters saying how long it was.
   static std::string quoted(const nlohmann::json& value);
 
+  // The object itself and where it came from, to keep it for reading again later.
+  const nlohmann::json& json() const { return object_; }
+  const std::string& source() const { return source_; }
+  const std::string& path() const { return path_; }
+
   // Throws std::invalid_argument("<source>: <path.key> = <value> is not allowed: <allowed>").
   [[noreturn]] void reject(const std::string& key, const std::string& allowed) const;
 
