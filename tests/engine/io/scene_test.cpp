@@ -495,7 +495,7 @@ TEST(ScenePhysics, SimpleCushionModelReboundsHeadOnAtETimesTheIncomingSpeed) {
 
 // The paper scheme chosen in the scene: the same hit as the exact solver's to within its
 // first-order error, at most about 2.8 V0 / N (one Euler increment; see
-// tests/engine/sim/cushion_contact_test.cpp), taken as 4 V0 / N.
+// tests/engine/models/cushion_paper_model_test.cpp), taken as 4 V0 / N.
 TEST(ScenePhysics, PaperCushionModelAgreesWithTheExactSolverToItsFirstOrderError) {
   constexpr double kPaperErrorPerStep = 4.0;
   constexpr int kSteps = 500;
