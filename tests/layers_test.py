@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """The layer rule, checked: every #include in the source tree points down or sideways, never up.
 
-    physics/  <-  engine/sim/  <-  engine/io/  <-  engine/play/, engine/baselines/  <-  render/  <-  tools/
+    physics/  <-  engine/sim/  <-  engine/models/  <-  engine/io/  <-  engine/play/, engine/baselines/  <-  render/  <-  tools/
+
+with one exception: engine/models/ reads its parameters with engine/io/json_reader (which
+includes nothing of this project), so it may include that one file of engine/io/.
 
 and the outside libraries stay where they belong: Box2D in engine/baselines/box2d_pool only, SDL2
 in tools/baize_view only, OSMesa in render/osmesa_context only. Usage: layers_test.py SOURCE_ROOT.
@@ -16,9 +19,10 @@ import tempfile
 ALLOWED = {
     "physics/": ["physics/"],
     "engine/sim/": ["physics/", "engine/sim/"],
-    "engine/io/": ["physics/", "engine/sim/", "engine/io/"],
-    "engine/play/": ["physics/", "engine/sim/", "engine/io/", "engine/play/"],
-    "engine/baselines/": ["physics/", "engine/sim/", "engine/io/", "engine/baselines/"],
+    "engine/models/": ["physics/", "engine/sim/", "engine/models/", "engine/io/json_reader.h"],
+    "engine/io/": ["physics/", "engine/sim/", "engine/models/", "engine/io/"],
+    "engine/play/": ["physics/", "engine/sim/", "engine/models/", "engine/io/", "engine/play/"],
+    "engine/baselines/": ["physics/", "engine/sim/", "engine/models/", "engine/io/", "engine/baselines/"],
     "render/": ["physics/", "engine/", "render/"],
     "tools/": ["physics/", "engine/", "render/", "tools/"],
 }
@@ -57,11 +61,13 @@ def self_test():
         "physics/a.cpp": '#include "engine/sim/x.h"\n',
         "engine/sim/b.h": '#include "engine/io/table.h"\n',
         "engine/io/c.cpp": '#include "engine/play/shot_suite.h"\n',
+        "engine/models/h.cpp": '#include "engine/io/scene.h"\n',
         "engine/play/d.cpp": '#include "render/camera.h"\n',
         "render/e.cpp": '#include "tools/baize/cli_errors.h"\n',
         "engine/sim/f.cpp": "#include <box2d/box2d.h>\n",
         "render/g.cpp": "#include <SDL.h>\n",
         "engine/io/ok.cpp": '#include "engine/sim/shot_simulator.h"\n#include <vector>\n',
+        "engine/models/ok.cpp": '#include "engine/io/json_reader.h"\n',
     }
     with tempfile.TemporaryDirectory() as tmp:
         root = pathlib.Path(tmp)
@@ -69,7 +75,7 @@ def self_test():
             (root / rel).parent.mkdir(parents=True, exist_ok=True)
             (root / rel).write_text(text)
         flagged = {v.split(":")[0] for v in violations(root)}
-    expected = set(planted) - {"engine/io/ok.cpp"}
+    expected = set(planted) - {"engine/io/ok.cpp", "engine/models/ok.cpp"}
     if flagged != expected:
         print(f"self-test failed: flagged {sorted(flagged)}, expected {sorted(expected)}")
         return False

@@ -272,10 +272,8 @@ double box2dLengthUnit_m(double time_step_s) {
 double calibratedCushionRestitution(const engine::SimulationParams& params) {
   physics::BallVelocity rolling;  // cushion frame: y into the cushion, natural roll about x
   rolling.v = {0, kCalibrationSpeed_mps, 0};
-  rolling.w = {kCalibrationSpeed_mps / params.cushion.radius_m, 0, 0};
-  const physics::CushionImpactResult r =
-      physics::solveCushionImpactExact(params.cushion, rolling, params.cushion_solver);
-  return -r.after.v.y() / kCalibrationSpeed_mps;
+  rolling.w = {kCalibrationSpeed_mps / params.ball.radius_m, 0, 0};
+  return -params.cushion->resolve(params, rolling).v.y() / kCalibrationSpeed_mps;
 }
 
 engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
@@ -288,18 +286,20 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
   auto toBox = [&](const Eigen::Vector2d& q) {
     return b2Vec2(static_cast<float>(q.x() / unit_m), static_cast<float>(q.y() / unit_m));
   };
-  const double R = p.cushion.radius_m, mass = p.cushion.mass_kg;
+  const double R = p.ball.radius_m, mass = p.ball.mass_kg;
 
   b2World world(b2Vec2(0, 0));  // seen from above: gravity acts through the cloth model
   world.SetAllowSleeping(false);
-  ContactRecorder recorder(calibratedCushionRestitution(p), p.cushion.cushion_friction,
-                           p.ball_ball.restitution,
-                           physics::ballBallFriction(p.ball_ball, kBallFrictionSlip_mps),
+  const engine::RigidCushionContact cushion = p.cushion->rigidContact(p);
+  const engine::RigidBallContact ball_ball = p.ball_ball->rigidContact(p, kBallFrictionSlip_mps);
+  ContactRecorder recorder(calibratedCushionRestitution(p), cushion.friction,
+                           ball_ball.restitution, ball_ball.friction,
                            kRestitutionThreshold_mps / unit_m);
   engine::SimulationResult result;
   recorder.events = &result.events;
   recorder.unit_m = unit_m;
-  recorder.nose_spin_per_impulse = R * physics::contactSinTheta(p.cushion) / (0.4 * mass * R * R);
+  recorder.nose_spin_per_impulse =
+      R * cushion.contact_sin_theta / (engine::BallProperties::kInertiaFactor * mass * R * R);
   world.SetContactListener(&recorder);
 
   // Cushions: one static body holding every chain.
@@ -350,7 +350,7 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
     b2MassData mass_data;
     mass_data.mass = static_cast<float>(mass);
     mass_data.center.SetZero();
-    mass_data.I = static_cast<float>(0.4 * mass * (R / unit_m) * (R / unit_m));
+    mass_data.I = static_cast<float>(engine::BallProperties::kInertiaFactor * mass * (R / unit_m) * (R / unit_m));
     balls[i].body->SetMassData(&mass_data);
     balls[i].horizontal_spin_radps = input[i].angular_velocity.head<2>();
   }

@@ -17,15 +17,16 @@
 // - Cushions and jaws: Box2D edge chains along the cushion noses, the jaw arcs split into short
 //   edges, one-sided so a ball is pushed back to the table side. Each chain is set back by Box2D's
 //   edge skin (b2_polygonRadius) so that a ball touches it at R from the real nose. Ball-cushion
-//   contacts get Box2D restitution and Coulomb friction: the restitution is the Mathavan 2010 cushion
+//   contacts get Box2D restitution and Coulomb friction: the restitution is the chosen cushion
 //   model's own head-on rebound ratio of a rolling ball (what a developer would tune to), the
-//   friction is the cushion model's mu_w. Box2D resolves the contact at the ball's equator; the
+//   friction and nose height its RigidCushionContact (Mathavan 2010: mu_w and h; the simple rule:
+//   none, at the equator). Box2D resolves the contact at the ball's equator; the
 //   horizontal impulse it applied is then also applied, as torque on the kept horizontal spin, at
 //   the real nose height (that is how a cushion takes topspin off). What it still misses: the
 //   friction at the nose and the cloth during the impact, which the Mathavan 2010 model integrates, so the
 //   spin after a rebound is off (for a rolling head-on hit it takes off too much topspin).
-// - Ball-ball contacts get Newton restitution e from the ball-ball parameters and Coulomb friction
-//   at Alciatore's fitted mu for a 1 m/s slip; Box2D's friction changes only the spin about z. The
+// - Ball-ball contacts get Newton restitution e and Coulomb friction from the chosen ball-ball
+//   model's RigidBallContact (the frictional model: Alciatore's fitted mu at a 1 m/s slip); Box2D's friction changes only the spin about z. The
 //   vertical friction of topspin or draw at the contact, which throws spin onto the object ball in
 //   the event loop's model, has no place in a 2D contact: missing.
 // - Pockets: a ball whose centre is inside a capture circle after a step is removed.
@@ -65,8 +66,8 @@ inline constexpr double kMaxBox2dShotTime_s = 1000;
 // Metres per Box2D length unit for a time step (see above).
 double box2dLengthUnit_m(double time_step_s);
 
-// Restitution given to ball-cushion contacts: the Mathavan 2010 model's rebound speed over the incoming
-// speed for a rolling ball hitting a cushion head on at 1 m/s, with these parameters.
+// Restitution given to ball-cushion contacts: the chosen cushion model's rebound speed over the
+// incoming speed for a rolling ball hitting a cushion head on at 1 m/s, with these parameters.
 double calibratedCushionRestitution(const engine::SimulationParams& params);
 
 // Simulates the shot in Box2D until every ball is at rest or pocketed. Events: BallBall, Cushion,

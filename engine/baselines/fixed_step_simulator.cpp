@@ -44,7 +44,7 @@ class FixedStepper {
  public:
   FixedStepper(const SimulationParams& p, const TableGeometry& table, double dt,
                const FixedStepObserver& observer)
-      : p_(p), table_(table), dt_(dt), R_(p.cushion.radius_m), observer_(observer) {}
+      : p_(p), table_(table), dt_(dt), R_(p.ball.radius_m), observer_(observer) {}
 
   SimulationResult run(const std::vector<BallState>& input);
 
@@ -172,9 +172,9 @@ void FixedStepper::resolve(const Contact& c) {
   if (c.kind == EventKind::BallBall) {
     BallState& b = balls_[c.other].state;
     event.before.push_back(b);
-    const physics::BallBallImpactResult impact = physics::resolveBallBallImpact(
-        p_.ball_ball, {a.velocity, a.angular_velocity}, {b.velocity, b.angular_velocity},
-        Eigen::Vector3d(n.x(), n.y(), 0));
+    const physics::BallBallImpactResult impact =
+        p_.ball_ball->resolve(p_, {a.velocity, a.angular_velocity}, {b.velocity, b.angular_velocity},
+                              Eigen::Vector3d(n.x(), n.y(), 0));
     a.velocity = impact.ball1.v;
     a.angular_velocity = impact.ball1.w;
     b.velocity = impact.ball2.v;
@@ -183,9 +183,7 @@ void FixedStepper::resolve(const Contact& c) {
     active_[c.other] = 1;
   } else {
     const ContactFrame frame(n);
-    frame.toTable(
-        physics::solveCushionImpactExact(p_.cushion, frame.toLocal(a), p_.cushion_solver).after,
-        &a);
+    frame.toTable(p_.cushion->resolve(p_, frame.toLocal(a)), &a);
     event.after.push_back(a);
   }
   active_[c.ball] = 1;

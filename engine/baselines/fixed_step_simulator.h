@@ -9,8 +9,8 @@
 //  2. a ball whose centre is inside a pocket's capture circle falls in;
 //  3. every contact that overlaps (or touches) and approaches is resolved by its impact model, the
 //     one estimated to have begun earliest (overlap depth / approach speed) first, until none
-//     approaches: ball-ball by physics::resolveBallBallImpact, straight cushions and jaws by
-//     physics::solveCushionImpactExact in the frame of the contact normal (as engine::simulate);
+//     approaches: ball-ball by the chosen ball-ball model, straight cushions and jaws by the chosen
+//     cushion model in the frame of the contact normal (as engine::simulate);
 //  4. overlap that remains is removed by moving positions only (push-out): velocities and spins are
 //     untouched, and on a level table a position carries no energy, so push-out never adds energy.
 //

@@ -55,8 +55,6 @@ class JsonReader {
   double nonNegativeNumber(const std::string& key) const;       // finite and >= 0
   int integer(const std::string& key, int min, int max) const;  // an integer in [min, max]
 
-  const nlohmann::json& json() const { return object_; }  // the object itself
-  const std::string& source() const { return source_; }
   std::string keyPath(const std::string& key) const;  // "path.key", escaped and cut
 
   // "source: path.key" for messages about a value that passed its own check but not a relation.
@@ -67,6 +65,11 @@ class JsonReader {
   // A value as messages quote it: JSON text (NaN and infinities, which JSON cannot hold, as "nan"
   // and "inf"), bytes that are not UTF-8 replaced, cut after 200 characters saying how long it was.
   static std::string quoted(const nlohmann::json& value);
+
+  // The object itself and where it came from, to keep it for reading again later.
+  const nlohmann::json& json() const { return object_; }
+  const std::string& source() const { return source_; }
+  const std::string& path() const { return path_; }
 
   // Throws std::invalid_argument("<source>: <path.key> = <value> is not allowed: <allowed>").
   [[noreturn]] void reject(const std::string& key, const std::string& allowed) const;

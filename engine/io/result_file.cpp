@@ -166,7 +166,7 @@ class ResultReader {
     r_.physics = physics.json();
     const PhysicsOverrides ran = readPhysicsOverrides(physics);
     r_.params = simulationParamsFor(r_.scene);
-    applyPhysicsOverrides(ran, &r_.params);
+    applyPhysicsOverrides(ran, modelDefaultsFor(r_.scene), &r_.params);
     physics::CueStrikeParams cue = cueStrikeParamsFor(r_.scene);
     applyPhysicsOverrides(ran, &cue);
     validateScenePhysics(r_.params, cue, source_,

@@ -282,20 +282,23 @@ Scene loadScene(const std::string& path) {
   return sceneFromJson(JsonReader::parseFile(path), path);
 }
 
+ModelDefaults modelDefaultsFor(const Scene& scene) {
+  ModelDefaults defaults;
+  defaults.cushion_contact_height_m = scene.table.cushion_contact_height_m;
+  if (scene.table.kind == TableKind::Snooker)
+    defaults.ball_ball_restitution = 0.89;  // snooker balls (physics-notes section 3)
+  return defaults;
+}
+
 SimulationParams simulationParamsFor(const Scene& scene) {
-  SimulationParams p = poolSimulationParams();
-  if (scene.table.kind == TableKind::Snooker) {
-    p.cloth = physics::snookerCloth();
-    p.ball_ball.restitution = 0.89;  // snooker balls (physics-notes section 3)
-  }
-  p.cloth.radius_m = scene.ball_set.radius_m;
-  p.cushion.radius_m = scene.ball_set.radius_m;
-  p.cushion.mass_kg = scene.ball_set.mass_kg;
-  p.cushion.contact_height_m = scene.table.cushion_contact_height_m;
-  p.cushion.cloth_friction = p.cloth.sliding_friction;
-  p.ball_ball.radius_m = scene.ball_set.radius_m;
-  p.ball_ball.mass1_kg = p.ball_ball.mass2_kg = scene.ball_set.mass_kg;
-  applyPhysicsOverrides(scene.overrides, &p);
+  BallProperties ball;
+  ball.mass_kg = scene.ball_set.mass_kg;
+  ball.radius_m = scene.ball_set.radius_m;
+  const ModelDefaults defaults = modelDefaultsFor(scene);
+  SimulationParams p = simulationParamsWith(
+      ball, scene.table.kind == TableKind::Snooker ? physics::snookerCloth() : physics::poolCloth(),
+      defaults);
+  applyPhysicsOverrides(scene.overrides, defaults, &p);
   return p;
 }
 

@@ -42,9 +42,12 @@ Scene loadScene(const std::string& path);
 Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
                     const JsonReader* own_shot = nullptr);
 
-// The physics of the scene's table and balls: pool or snooker cloth, the table's cushion height,
-// the ball set's radius and mass, then the scene's overrides.
+// The physics of the scene's table and balls: pool or snooker cloth, the ball set's radius and
+// mass, the default models with the table's cushion height, then the scene's overrides.
 SimulationParams simulationParamsFor(const Scene& scene);
+// What the models' defaults take from the scene's table and ball set (the cushion nose height, the
+// ball-ball restitution of snooker balls).
+ModelDefaults modelDefaultsFor(const Scene& scene);
 
 // The cue: physics::CueStrikeParams defaults with the ball set's radius and mass, then the scene's
 // overrides (a squirt end mass turns squirt on).

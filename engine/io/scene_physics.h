@@ -8,10 +8,11 @@
 #include <optional>
 #include <string>
 
-#include "engine/sim/cushion_contact.h"
+#include <nlohmann/json.hpp>
+
 #include "engine/io/json_reader.h"
+#include "engine/models/model_registry.h"
 #include "engine/sim/shot_simulator.h"
-#include "physics/ball_ball_impact.h"
 #include "physics/cue_strike.h"
 
 namespace baize::engine {
@@ -23,22 +24,12 @@ struct PhysicsOverrides {
   std::optional<double> sliding_friction;   // mu_s (also the cushion model's cloth friction)
   std::optional<double> rolling_friction;   // mu_r
   std::optional<double> spinning_friction;  // mu_sp
-  // physics.cushion -> SimulationParams::cushion_model and its options, physics::CushionParams
-  std::optional<CushionModelChoice> cushion_model;
-  std::optional<double> cushion_restitution;  // e_e
-  std::optional<double> cushion_friction;     // mu_w
-  std::optional<double> contact_height_m;     // h, nose height above the slate
-  std::optional<int> paper_steps;             // N of the paper scheme
-  std::optional<double> simple_restitution;   // e of the simple rule
-  std::optional<double> cushion_tolerance;    // the exact solver's tolerance
-  // physics.ball_ball -> physics::BallBallParams
-  std::optional<physics::BallBallModel> ball_ball_model;
-  std::optional<double> ball_ball_restitution;
-  std::optional<physics::BallBallFrictionLaw> friction_law;
-  std::optional<double> friction_fit_a, friction_fit_b, friction_fit_c_s_per_m;
-  std::optional<double> constant_friction;
-  std::optional<double> ball_friction;        // mu_b (mathavan2014)
-  std::optional<double> ball_ball_tolerance;  // integration tolerance (mathavan2014)
+  // physics.cushion and physics.ball_ball, as the file gives them ("model" and the chosen
+  // model's keys), already checked by readPhysicsOverrides; applyPhysicsOverrides has the
+  // registries (engine/models/model_registry.h) make the models from them.
+  std::optional<nlohmann::json> cushion;
+  std::optional<nlohmann::json> ball_ball;
+  std::string source;  // the file they came from, for messages
   // physics.cue -> physics::CueStrikeParams
   std::optional<double> cue_mass_kg;
   std::optional<double> tip_restitution;
@@ -52,9 +43,11 @@ struct PhysicsOverrides {
 // the chosen model. Ranges are left to validateScenePhysics.
 PhysicsOverrides readPhysicsOverrides(const JsonReader& physics);
 
-// Applies the overrides. The cushion model's cloth friction and the ball-ball model's follow the
-// cloth's sliding friction (the same cloth), overridden or not.
-void applyPhysicsOverrides(const PhysicsOverrides& overrides, SimulationParams* params);
+// Applies the overrides. A cushion or ball_ball group given replaces that model with the one it
+// names (or the registry's default), made from `defaults` (the table's and ball set's) and the
+// group's keys. The models take the cloth's friction from the cloth, overridden or not.
+void applyPhysicsOverrides(const PhysicsOverrides& overrides, const ModelDefaults& defaults,
+                           SimulationParams* params);
 void applyPhysicsOverrides(const PhysicsOverrides& overrides, physics::CueStrikeParams* cue);
 
 // Validates the parameters a scene runs with, group by group (cloth, cushion, ball_ball, cue); a

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/models/cushion_mathavan2010.h"
 #include "engine/sim/contact_geometry.h"
 #include "engine/sim/shot_simulator.h"
 
@@ -67,7 +68,12 @@ std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Sc
       if (incoming.v.y() > 0) impacts.push_back(incoming);  // the loop's rule for an impact
     }
   }
-  if (!shots.empty()) *params = engine::simulationParamsFor(shots[0]).cushion;
+  // The Mathavan 2010 parameters of the shots' table and balls (random shots override none).
+  if (!shots.empty()) {
+    *params = engine::impactParams(
+        engine::readMathavan2010(engine::modelDefaultsFor(shots[0]), nullptr),
+        engine::simulationParamsFor(shots[0]));
+  }
   return impacts;
 }
 

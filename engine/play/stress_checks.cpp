@@ -32,7 +32,7 @@ std::string at(double time_s) {
 // Checks the balls on the table at one instant: all finite, no overlap, all on the table.
 void checkPositions(const StressTable& table, const std::vector<BallState>& balls,
                     const std::vector<int>& ids, double time_s, ShotCheck* check) {
-  const double R = table.params.cushion.radius_m;
+  const double R = table.params.ball.radius_m;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     const std::string ball = "ball " + std::to_string(ids[i]);
     if (!finite(balls[i])) {

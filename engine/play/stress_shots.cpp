@@ -72,7 +72,7 @@ class ShotMaker {
   // not overlapping `balls`, and within the rectangle a scene accepts when `scene` is set.
   bool clear(const StressTable& t, const std::vector<Eigen::Vector2d>& balls,
              const Eigen::Vector2d& p, bool scene) const {
-    const double R = t.params.cushion.radius_m;
+    const double R = t.params.ball.radius_m;
     if (scene &&
         (std::abs(p.x()) > t.table.length_m / 2 - R || std::abs(p.y()) > t.table.width_m / 2 - R)) {
       return false;
@@ -85,7 +85,7 @@ class ShotMaker {
   }
 
   Eigen::Vector2d anywhere(const StressTable& t) {
-    const double R = t.params.cushion.radius_m;
+    const double R = t.params.ball.radius_m;
     return {uniform(-t.table.length_m / 2 + R, t.table.length_m / 2 - R),
             uniform(-t.table.width_m / 2 + R, t.table.width_m / 2 - R)};
   }
@@ -122,7 +122,7 @@ class ShotMaker {
   void layOutTiny(const StressTable& t, int max_balls, CueLayout* layout);
   CuePlan drawStrike(StressShotKind kind, double aim_deg,
                      const physics::CueStrikeParams& cue_params);
-  static double ballRadius(const StressTable& t) { return t.params.cushion.radius_m; }
+  static double ballRadius(const StressTable& t) { return t.params.ball.radius_m; }
   // A place touching a rail, facing or jaw of pocket k (clear of `balls`), if one is found.
   std::optional<Eigen::Vector2d> againstPocket(const StressTable& t, int pocket,
                                                const std::vector<Eigen::Vector2d>& balls,
@@ -140,7 +140,7 @@ std::vector<BallState> atRest(const std::vector<Eigen::Vector2d>& places) {
 
 StressShot ShotMaker::rectangleShot(StressShotKind kind, int max_balls) {
   const StressTable& t = tables_.of(StressTableId::Rectangle);
-  const double R = t.params.cushion.radius_m;
+  const double R = t.params.ball.radius_m;
   StressShot shot;
   shot.kind = kind;
   shot.table = t.id;
@@ -243,7 +243,7 @@ StressShot ShotMaker::rectangleShot(StressShotKind kind, int max_balls) {
 // rolling ball slows at mu_r g, so reaching distance s at time t takes v = s / t + mu_r g t / 2.
 StressShot ShotMaker::nearSimultaneous(int max_balls) {
   const StressTable& t = tables_.of(StressTableId::Pool9ft);
-  const double R = t.params.cushion.radius_m;
+  const double R = t.params.ball.radius_m;
   const double a = t.params.cloth.rolling_friction * t.params.cloth.gravity_mps2;
   StressShot shot;
   shot.kind = StressShotKind::NearSimultaneous;
@@ -286,7 +286,7 @@ StressShot ShotMaker::nearSimultaneous(int max_balls) {
 std::optional<Eigen::Vector2d> ShotMaker::againstPocket(const StressTable& t, int pocket,
                                                         const std::vector<Eigen::Vector2d>& balls,
                                                         bool scene) {
-  const double R = t.params.cushion.radius_m;
+  const double R = t.params.ball.radius_m;
   for (int attempt = 0; attempt < kPlacementAttempts; ++attempt) {
     Eigen::Vector2d p;
     const int where = integer(0, 2);
@@ -321,7 +321,7 @@ std::optional<Eigen::Vector2d> ShotMaker::againstPocket(const StressTable& t, in
 StressShot ShotMaker::inTheMouth(int max_balls) {
   const StressTable& t =
       tables_.of(chance(3) ? StressTableId::Snooker12ft : StressTableId::Pool9ft);
-  const double R = t.params.cushion.radius_m;
+  const double R = t.params.ball.radius_m;
   StressShot shot;
   shot.kind = StressShotKind::InTheMouth;
   shot.table = t.id;

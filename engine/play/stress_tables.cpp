@@ -86,7 +86,7 @@ StressTableId stressTableIdByName(const std::string& name) {
 
 std::string offTableReason(const StressTable& table, const Eigen::Vector2d& centre,
                            double slack_m) {
-  const double R = table.params.cushion.radius_m;
+  const double R = table.params.ball.radius_m;
   std::ostringstream why;
   why.precision(17);
   if (!engine::insideOutline(table.geometry.outline, centre)) {

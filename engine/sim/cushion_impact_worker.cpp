@@ -3,7 +3,6 @@
 #include <limits>
 
 #include "engine/sim/cpu_quota.h"
-#include "engine/sim/cushion_contact.h"
 
 namespace baize::engine {
 namespace {
@@ -129,7 +128,7 @@ bool CushionImpactWorker::solveOne(bool set_environment) {
     return true;  // taken meanwhile
   if (set_environment) std::fesetenv(&environment_);
   try {
-    job.output = resolveCushionContact(params_, job.input);
+    job.output = params_.cushion->resolve(params_, job.input);
     job.state.store(kDone, std::memory_order_release);
   } catch (...) {  // the loop solves it again and reports the error itself
     job.state.store(kFailed, std::memory_order_release);

@@ -2,7 +2,6 @@
 
 #include <cstring>
 
-#include "engine/sim/cushion_contact.h"
 #include "engine/sim/simulation_params.h"
 
 namespace baize::engine {
@@ -107,7 +106,7 @@ physics::BallVelocity CushionSolveAhead::resolve(int ball, const physics::BallVe
     }
     forget(ball);
   }
-  return resolveCushionContact(params_, incoming);
+  return params_.cushion->resolve(params_, incoming);
 }
 
 }  // namespace baize::engine

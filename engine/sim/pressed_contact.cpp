@@ -5,16 +5,16 @@
 
 namespace baize::engine {
 
-void releasePressedContact(const physics::CushionParams& ball, double energy_before_J,
+void releasePressedContact(const BallProperties& ball, double energy_before_J,
                            const Eigen::Vector3d& normal, physics::BallVelocity* first,
                            physics::BallVelocity* second) {
   const double separation = second ? (second->v - first->v).dot(normal) : first->v.dot(normal);
   if (separation >= kSustainedContactSpeed_mps) return;
   auto spinEnergy = [&](const physics::BallVelocity& b) {
-    return physics::kineticEnergy(ball, {Eigen::Vector3d::Zero(), b.w});
+    return kineticEnergy(ball, {Eigen::Vector3d::Zero(), b.w});
   };
   const double energy =
-      physics::kineticEnergy(ball, *first) + (second ? physics::kineticEnergy(ball, *second) : 0);
+      kineticEnergy(ball, *first) + (second ? kineticEnergy(ball, *second) : 0);
   const double spin = spinEnergy(*first) + (second ? spinEnergy(*second) : 0);
   // Spin paid out is spin * (1 - scale^2); keep a rounding margin so energy cannot grow.
   const double budget = (spin + energy_before_J - energy) * (1 - kEnergyBudgetMargin);
@@ -33,8 +33,8 @@ void releasePressedContact(const physics::CushionParams& ball, double energy_bef
   } else {
     first->v += boost * normal;
   }
-  const double excess = physics::kineticEnergy(ball, *first) +
-                        (second ? physics::kineticEnergy(ball, *second) : 0) - energy_before_J;
+  const double excess = kineticEnergy(ball, *first) +
+                        (second ? kineticEnergy(ball, *second) : 0) - energy_before_J;
   if (excess <= 0) return;
   const double scale = std::sqrt(std::max(0.0, 1 - excess / spin));
   first->w *= scale;

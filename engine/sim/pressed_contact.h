@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/sim/ball_properties.h"
 #include "physics/cushion_model.h"
 
 namespace baize::engine {
@@ -26,7 +27,7 @@ constexpr double kEnergyBudgetMargin = 1e-9;
 // itself dissipated (`energy_before_J` is the balls' kinetic energy before it): as far as that
 // budget reaches, so energy never grows. `normal` points from `first` to `second`; `second` is null
 // for a cushion (infinite mass; the normal then points away from it, into the table).
-void releasePressedContact(const physics::CushionParams& ball, double energy_before_J,
+void releasePressedContact(const BallProperties& ball, double energy_before_J,
                            const Eigen::Vector3d& normal, physics::BallVelocity* first,
                            physics::BallVelocity* second);
 

@@ -38,7 +38,7 @@ ShotSimulation::ShotSimulation(const SimulationParams& params, const TableGeomet
     : params_(params), table_(table), ahead_(params, static_cast<int>(balls.size()), worker) {
   validateSimulationInput(params, table, balls, ball_ids);
   ball_ids_ = ball_ids;
-  R_ = params.cushion.radius_m;
+  R_ = params.ball.radius_m;
   n_ = static_cast<int>(balls.size());
   result_.events.reserve(kEventsReserved);
   if (params.record_trajectories) {
@@ -81,8 +81,8 @@ ShotSimulation::ShotSimulation(const SimulationParams& params, const TableGeomet
     changed_.push_back(i);
     is_changed_[i] = 1;
   }
-  // The simple rule costs less than handing an impact over.
-  solve_ahead_ = params.cushion_model != CushionModelChoice::SimpleRestitution;
+  // A closed-form rule costs less than handing an impact over.
+  solve_ahead_ = params.cushion->worthSolvingAhead();
 }
 
 ShotSimulation::~ShotSimulation() = default;
@@ -594,7 +594,7 @@ void ShotSimulation::moveToEvent(int i) {
   if (dt > 0) b.state = physics::advanceWithinState(params_.cloth, b.state, dt);
 }
 
-// The chosen cushion model (engine/sim/cushion_contact.h) in the frame of the contact normal, or
+// The chosen cushion model (engine/sim/cushion_contact_model.h) in the frame of the contact normal, or
 // the worker's answer from the same input.
 void ShotSimulation::resolveCushionContact(Event* event) {
   Track& ball = balls_[event->ball];
@@ -608,7 +608,7 @@ void ShotSimulation::resolveCushionContact(Event* event) {
   if (local.v.y() > 0) after = ahead_.resolve(event->ball, local);
   // In the cushion's frame the normal into the table is -y.
   if (pressed)
-    releasePressedContact(params_.cushion, physics::kineticEnergy(params_.cushion, local),
+    releasePressedContact(params_.ball, kineticEnergy(params_.ball, local),
                           Eigen::Vector3d(0, -1, 0), &after, nullptr);
   frame.toTable(after, &a);
 }
@@ -628,14 +628,13 @@ void ShotSimulation::resolveBallContact(Event* event) {
   physics::BallVelocity a_after = va, b_after = vb;
   if (approaching) {
     const physics::BallBallImpactResult impact =
-        physics::resolveBallBallImpact(params_.ball_ball, va, vb, normal);
+        params_.ball_ball->resolve(params_, va, vb, normal);
     a_after = impact.ball1;
     b_after = impact.ball2;
   }
   if (pressed) {
     releasePressedContact(
-        params_.cushion,
-        physics::kineticEnergy(params_.cushion, va) + physics::kineticEnergy(params_.cushion, vb),
+        params_.ball, kineticEnergy(params_.ball, va) + kineticEnergy(params_.ball, vb),
         normal, &a_after, &b_after);
   }
   a.velocity = a_after.v;

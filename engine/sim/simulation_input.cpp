@@ -109,21 +109,20 @@ std::string ballName(const std::vector<std::string>& ids, std::size_t i) {
   return ids.empty() ? "ball " + std::to_string(i) : "ball '" + ids[i] + "'";
 }
 
-// The parameters: each model's own checks, and the ball's radius and mass the same in every model.
+// The parameters: a model chosen for each kind of contact, each model's own checks with the shot's
+// ball and cloth, and the cloth's copy of the ball radius the ball's.
 void validateParams(const SimulationParams& p) {
-  physics::validateClothParams(p.cloth);
-  physics::validateCushionParams(p.cushion);
-  physics::validateBallBallParams(p.ball_ball);
-  validateCushionContactParams(p);
-  const double R = p.cushion.radius_m;
-  if (p.cloth.radius_m != R || p.ball_ball.radius_m != R) {
-    physics::rejectValue("ball radius of the cloth and ball-ball parameters (m)", p.cloth.radius_m,
-                         "it must equal the cushion parameters' radius " + physics::valueText(R));
+  if (!p.cushion || !p.ball_ball) {
+    throw std::invalid_argument(
+        "a missing cushion or ball-ball model is not allowed: choose one by name "
+        "(engine/models/model_registry.h)");
   }
-  if (p.ball_ball.mass1_kg != p.cushion.mass_kg || p.ball_ball.mass2_kg != p.cushion.mass_kg) {
-    physics::rejectValue(
-        "ball mass of the ball-ball parameters (kg)", p.ball_ball.mass1_kg,
-        "it must equal the cushion parameters' mass " + physics::valueText(p.cushion.mass_kg));
+  physics::validateClothParams(p.cloth);
+  p.cushion->validate(p);
+  p.ball_ball->validate(p);
+  if (p.cloth.radius_m != p.ball.radius_m) {
+    physics::rejectValue("ball radius of the cloth parameters (m)", p.cloth.radius_m,
+                         "it must equal the ball's radius " + physics::valueText(p.ball.radius_m));
   }
   if (!(p.max_events > 0))
     physics::rejectValue("max_events", static_cast<double>(p.max_events), "it must be > 0");
@@ -284,8 +283,8 @@ void validateSimulationInput(const SimulationParams& p, const TableGeometry& tab
   validateTableShape(table);
   const Namer who = [&](std::size_t i) { return ballName(ball_ids, i); };
   validateBallStates(balls, who);
-  checkNoOverlaps(balls, p.cushion.radius_m, who);
-  checkOnTable(table, balls, p.cushion.radius_m, who);
+  checkNoOverlaps(balls, p.ball.radius_m, who);
+  checkOnTable(table, balls, p.ball.radius_m, who);
 }
 
 }  // namespace baize::engine

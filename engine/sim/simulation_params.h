@@ -1,34 +1,28 @@
-// The constant parameters of a shot: the cloth, the cushion and ball-ball models and their
-// options, and the event budget.
+// The constant parameters of a shot: the balls, the cloth, the cushion and ball-ball models, and
+// the event budget.
 #pragma once
 
-#include "engine/sim/cushion_contact.h"
-#include "physics/ball_ball_impact.h"
+#include <memory>
+
+#include "engine/sim/ball_ball_contact_model.h"
+#include "engine/sim/ball_properties.h"
+#include "engine/sim/cushion_contact_model.h"
 #include "physics/cloth_motion.h"
-#include "physics/cushion_exact_solver.h"
-#include "physics/cushion_model.h"
-#include "physics/cushion_simple_model.h"
 
 namespace baize::engine {
 
-// Constants of a shot. The ball radius and mass come from `cushion` (and must agree with `cloth`
-// and `ball_ball`, which simulate() checks).
+// Constants of a shot. The models are chosen by name from the registry in engine/models/
+// (poolSimulationParams there gives the pool defaults); they are constant and shared, so copying
+// SimulationParams copies two pointers, never a model.
 struct SimulationParams {
+  BallProperties ball;
+  // The cloth. Its radius_m is the physics struct's copy of ball.radius_m (physics/ is pure and
+  // takes it there); simulate() refuses the two differing.
   physics::ClothParams cloth = physics::poolCloth();
-  physics::CushionParams cushion;  // the Mathavan 2010 model; mass, radius and nose height of the balls
-  // The model every cushion and jaw hit goes through (engine/sim/cushion_contact.h), and the options of
-  // each: the exact solver's, the paper scheme's step count N, the simple rule's restitution.
-  CushionModelChoice cushion_model = CushionModelChoice::Mathavan2010Exact;
-  physics::ExactSolverOptions cushion_solver;
-  int cushion_paper_steps = 5000;  // N, as in the paper
-  physics::SimpleCushionParams cushion_simple;
-  physics::BallBallParams ball_ball;
+  std::shared_ptr<const CushionContactModel> cushion;    // every cushion and jaw hit
+  std::shared_ptr<const BallBallContactModel> ball_ball;  // every ball-ball collision
   long max_events = 100000;          // a shot needing more stops with an error saying so
   bool record_trajectories = false;  // fill SimulationResult::trajectories (costs memory only)
 };
-
-// Pool defaults throughout: 57.15 mm, 0.17 kg balls, the nose at 0.635 of the diameter above the
-// slate, e_e 0.98 and mu_w 0.14 for the cushion (the values of Mathavan 2010), cloth friction 0.2.
-SimulationParams poolSimulationParams();
 
 }  // namespace baize::engine

@@ -46,7 +46,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   params.max_events = std::min(params.max_events, kMaxFuzzEvents);
-  params.cushion_paper_steps = std::min(params.cushion_paper_steps, kMaxFuzzPaperSteps);
+  const bool paper = std::string(params.cushion->name()) == "paper";
+  if (paper) {
+    const int steps = params.cushion->parametersJson()["paper_steps"].get<int>();
+    params.cushion = engine::cushionModels().changed(
+        *params.cushion, {{"paper_steps", std::min(steps, kMaxFuzzPaperSteps)}}, "fuzz");
+  }
 
   std::vector<physics::BallState> balls;
   physics::CueStrikeResult strike;
@@ -83,7 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The paper's Euler scheme at few steps may add energy at a cushion (first order:
     // docs/cushion.md); the other models may not.
     const bool euler_cushion =
-        params.cushion_model == engine::CushionModelChoice::Mathavan2010Paper &&
+        paper &&
         (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw);
     fuzz::check(
         euler_cushion || after <= before * (1 + kEnergyRelativeTolerance) + kEnergyFloor_Jpkg,

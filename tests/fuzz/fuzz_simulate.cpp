@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/models/model_registry.h"
 #include "engine/sim/shot_simulator.h"
 #include "tests/fuzz/fuzz_support.h"
 
@@ -42,15 +43,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   engine::SimulationParams p = engine::poolSimulationParams();
   p.max_events = kMaxFuzzEvents;
   p.record_trajectories = true;
-  p.cushion_model = static_cast<engine::CushionModelChoice>(in.integer(0, 2));
-  p.cushion_paper_steps = in.integer(1, kMaxFuzzPaperSteps);
-  p.ball_ball.model = static_cast<phys::BallBallModel>(in.integer(0, 1));
+  // The models by their place in the seeds' numbering (make_binary_seeds.py).
+  const char* const cushion_models[] = {"exact", "paper", "simple"};
+  nlohmann::json cushion = {{"model", cushion_models[in.integer(0, 2)]}};
+  const int paper_steps = in.integer(1, kMaxFuzzPaperSteps);
+  if (cushion["model"] == "paper") cushion["paper_steps"] = paper_steps;
+  p.cushion = engine::cushionModels().read(engine::JsonReader(cushion, "fuzz"), engine::ModelDefaults{});
+  p.ball_ball = engine::ballBallModels().make(in.integer(0, 1) ? "mathavan2014" : "frictional",
+                                              engine::ModelDefaults{});
   if (in.byte() % 4 == 0) {  // another cloth, within the allowed ranges
     p.cloth.sliding_friction = in.inRange(0.01, 0.99);
     p.cloth.rolling_friction = p.cloth.sliding_friction * in.inRange(0.001, 0.99);
     p.cloth.spinning_friction = in.inRange(0.001, 0.99);
   }
-  const double R = p.cushion.radius_m;
+  const double R = p.ball.radius_m;
   const double length_m = in.inRange(4.5 * R, 4.0);
   const double width_m = in.inRange(2.5 * R, length_m);
   const engine::TableGeometry table = engine::rectangularTable(length_m, width_m);
@@ -97,7 +103,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The paper's Euler scheme at a few hundred steps may add energy at a cushion (first order:
     // docs/cushion.md); the other models may not.
     const bool euler_cushion =
-        p.cushion_model == engine::CushionModelChoice::Mathavan2010Paper &&
+        std::string(p.cushion->name()) == "paper" &&
         (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw);
     check(euler_cushion || after <= before * (1 + kEnergyRelativeTolerance) + kEnergyFloor_Jpkg,
           std::string("energy grew at a ") + engine::eventKindName(e.kind) +

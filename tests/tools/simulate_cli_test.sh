@@ -16,6 +16,15 @@ for line in "^pocketed: [0-9] ([a-z-]*)" "^cushion and jaw contacts: [0-9]* (cue
   grep -q "$line" <<<"$out" || fail "missing '$line' in: $out"
 done
 
+# --cushion-model and --ball-ball-model: the registries' models by name, in place of the scene's.
+flagged=$("$baize" simulate "$root/assets/scenes/9-ball-break.json" --cushion-model simple \
+  --ball-ball-model mathavan2014) || fail "--cushion-model exited $?"
+grep -q "^models: cushion simple, ball-ball mathavan2014$" <<<"$flagged" || fail "models: $flagged"
+if msg=$("$baize" simulate "$root/assets/scenes/9-ball-break.json" --cushion-model rigid 2>&1); then
+  fail "--cushion-model rigid was accepted"
+fi
+grep -q "rigid" <<<"$msg" || fail "message for --cushion-model rigid: $msg"
+
 # --json: the events in time order and a final state for each of the 10 balls.
 "$baize" simulate "$root/assets/scenes/9-ball-break.json" --json "$work/break.json" >/dev/null ||
   fail "--json exited $?"

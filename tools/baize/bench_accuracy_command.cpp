@@ -234,7 +234,8 @@ std::vector<Configuration> configurations() {
     setting << "tol=" << tolerance;
     list.push_back({"event", setting.str(), [tolerance](const Shot& s) {
                       engine::SimulationParams params = s.params;
-                      params.cushion_solver.tolerance = tolerance;
+                      params.cushion = engine::cushionModels().changed(
+                          *params.cushion, {{"tolerance", tolerance}}, "bench accuracy");
                       return engine::simulate(params, s.table, s.balls);
                     }});
   }

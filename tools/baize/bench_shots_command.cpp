@@ -99,7 +99,14 @@ void runBenchShots(const BenchShotsFlags& flags) {
   }
   // The scenes and random shots, with the tolerance asked for.
   const auto withTolerance = [&](engine::Scene scene) {
-    if (flags.cushion_tolerance) scene.overrides.cushion_tolerance = flags.cushion_tolerance;
+    // The tolerance is the exact model's: a scene that chose another model keeps it.
+    if (flags.cushion_tolerance) {
+      nlohmann::json& cushion = scene.overrides.cushion ? *scene.overrides.cushion
+                                                        : scene.overrides.cushion.emplace(
+                                                              nlohmann::json::object());
+      if (cushion.value("model", engine::cushionModels().defaultName()) == "exact")
+        cushion["tolerance"] = *flags.cushion_tolerance;
+    }
     return scene;
   };
   std::optional<AtomicFile> csv;

@@ -25,8 +25,26 @@ struct SimulateFlags {
   std::string scene;
   std::string json_path;
   std::vector<std::string> samples;  // "BALL@TIME_S"
+  std::string cushion_model;          // empty: the scene's
+  std::string ball_ball_model;        // empty: the scene's
   PictureFlags pictures;
 };
+
+// The scene with the models the flags name, each at its defaults in place of the scene's group,
+// checked as the scene's own physics is.
+engine::Scene withFlaggedModels(engine::Scene scene, const SimulateFlags& flags) {
+  if (flags.cushion_model.empty() && flags.ball_ball_model.empty()) return scene;
+  if (!flags.cushion_model.empty())
+    scene.overrides.cushion = nlohmann::json{{"model", flags.cushion_model}};
+  if (!flags.ball_ball_model.empty())
+    scene.overrides.ball_ball = nlohmann::json{{"model", flags.ball_ball_model}};
+  engine::validateScenePhysics(engine::simulationParamsFor(scene), engine::cueStrikeParamsFor(scene),
+                               scene.source, [] {
+                                 return std::string("the scene with --cushion-model or "
+                                                    "--ball-ball-model");
+                               });
+  return scene;
+}
 
 // A --sample request: a ball of the scene and a time from the strike on.
 struct SampleRequest {
@@ -70,7 +88,7 @@ void runSimulate(const SimulateFlags& flags) {
   std::unique_ptr<AtomicFile> json_file;
   if (!flags.json_path.empty()) json_file = std::make_unique<AtomicFile>(flags.json_path, "--json");
   checkPictureFlags(flags.pictures);  // also without --png or --frames: a bad value is an error
-  const engine::Scene scene = engine::loadScene(flags.scene);
+  const engine::Scene scene = withFlaggedModels(engine::loadScene(flags.scene), flags);
   std::vector<std::string> scene_ids;
   for (const engine::PlacedBall& b : scene.balls) scene_ids.push_back(b.id);
   std::vector<SampleRequest> samples;
@@ -170,6 +188,16 @@ void addSimulateCommand(CLI::App& parent) {
   command->add_option("--sample", flags->samples,
                       "print (and with --json write) BALL's state at TIME_S seconds after the "
                       "strike, as BALL@TIME_S; repeatable");
+  command
+      ->add_option("--cushion-model", flags->cushion_model,
+                   "resolve cushion and jaw hits by this model at its defaults instead of the "
+                   "scene's (docs/scenes.md, physics.cushion.model)")
+      ->check(CLI::IsMember(engine::cushionModels().names()));
+  command
+      ->add_option("--ball-ball-model", flags->ball_ball_model,
+                   "resolve ball-ball collisions by this model at its defaults instead of the "
+                   "scene's (physics.ball_ball.model)")
+      ->check(CLI::IsMember(engine::ballBallModels().names()));
   addPictureFlags(*command, flags->pictures);
   command->callback([flags] {
     if (const int status = runReportingErrors("simulate", [&] { runSimulate(*flags); })) {

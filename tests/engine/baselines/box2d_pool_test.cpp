@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "engine/models/model_registry.h"
 #include "engine/io/table.h"
 
 namespace baize::engine {
@@ -42,7 +43,7 @@ Box2dPoolSettings settingsWithStep(double dt) {
 // A rolling ball decelerates at mu_r g and stops after v^2 / (2 mu_r g).
 TEST(Box2dPool, RollingBallStopsAtTheRollingDistance) {
   const engine::SimulationParams p = engine::poolSimulationParams();
-  const double R = p.cushion.radius_m, v0 = 1.0;
+  const double R = p.ball.radius_m, v0 = 1.0;
   const double expected_m = v0 * v0 / (2 * p.cloth.rolling_friction * p.cloth.gravity_mps2);
   const engine::SimulationResult r =
       simulateBox2d(p, engine::rectangularTable(20, 10), {rollingBall(-8, 0, v0, 0, R)},
@@ -78,7 +79,7 @@ TEST(Box2dPool, StunShotSlidesThenRollsAsTheClothModelSays) {
 // it arrived with, give or take what the cloth does in the few ms after the contact.
 TEST(Box2dPool, CushionReboundReversesTheNormalVelocity) {
   const engine::SimulationParams p = engine::poolSimulationParams();
-  const double R = p.cushion.radius_m, v0 = 1.0, g = p.cloth.gravity_mps2;
+  const double R = p.ball.radius_m, v0 = 1.0, g = p.cloth.gravity_mps2;
   const double dt = 1e-4;
   const double gap_m = 0.2;  // from the ball's surface to the cushion at x = 1.27
   const double x0 = 1.27 - R - gap_m;
@@ -105,7 +106,7 @@ TEST(Box2dPool, CushionReboundReversesTheNormalVelocity) {
 // At an angle, the normal component reverses and the ball keeps moving along the cushion.
 TEST(Box2dPool, AngledReboundKeepsTheTangentialDirection) {
   const engine::SimulationParams p = engine::poolSimulationParams();
-  const double R = p.cushion.radius_m;
+  const double R = p.ball.radius_m;
   Box2dPoolSettings s = settingsWithStep(1e-4);
   s.stop_after_s = 0.45;  // it reaches the +x cushion after about 0.35 s, the +y one after 0.6 s
   const engine::SimulationResult r =
@@ -124,7 +125,7 @@ TEST(Box2dPool, BallRolledIntoACornerPocketFallsIn) {
   const Eigen::Vector2d v = 2.0 * (target - start).normalized();
   const engine::SimulationResult r =
       simulateBox2d(p, engine::geometryOf(table),
-                    {rollingBall(start.x(), start.y(), v.x(), v.y(), p.cushion.radius_m)},
+                    {rollingBall(start.x(), start.y(), v.x(), v.y(), p.ball.radius_m)},
                     settingsWithStep(kTimeStep_s));
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events.back().kind, engine::EventKind::Pocket);
@@ -136,7 +137,7 @@ TEST(Box2dPool, BallRolledIntoACornerPocketFallsIn) {
 TEST(Box2dPool, SameInputGivesTheSameOutput) {
   const engine::Table table = engine::builtinTable("pool-9ft");
   const engine::SimulationParams p = engine::poolSimulationParams();
-  const double R = p.cushion.radius_m;
+  const double R = p.ball.radius_m;
   std::vector<BallState> balls = {rollingBall(-0.6, 0.01, 3.0, 0, R)};
   for (int row = 0; row < 3; ++row)  // a small triangle, 1 mm apart
     for (int k = 0; k <= row; ++k)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "engine/models/model_registry.h"
 #include "engine/io/scene.h"
 #include "engine/io/table.h"
 #include "tests/engine/error_test_support.h"
@@ -121,7 +122,7 @@ TEST(FixedStepSimulator, BreakKeepsEnergyFallingAndEveryBallOnTheTable) {
   const Scene scene = loadScene(assetsDirectory() + "/scenes/9-ball-break.json");
   const SimulationParams p = simulationParamsFor(scene);
   const TableGeometry table = geometryOf(scene.table);
-  const double R = p.cushion.radius_m;
+  const double R = p.ball.radius_m;
   std::vector<BallState> balls;
   const SceneRun reference = runScene(scene);
   for (const PlacedBall& placed : scene.balls)
@@ -185,7 +186,7 @@ TEST(FixedStepSimulator, HeadOnHitUsesTheBallBallModel) {
     if (e.kind == EventKind::BallBall && hit == nullptr) hit = &e;
   ASSERT_NE(hit, nullptr);
   const double v_in = hit->before[0].velocity.x();
-  EXPECT_NEAR(hit->after[1].velocity.x(), (1 + p.ball_ball.restitution) / 2 * v_in, 1e-12);
+  EXPECT_NEAR(hit->after[1].velocity.x(), (1 + p.ball_ball->rigidContact(p, 0).restitution) / 2 * v_in, 1e-12);
 }
 
 TEST(FixedStepSimulator, RejectsBadStepsAndBadBalls) {

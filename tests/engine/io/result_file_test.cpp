@@ -117,7 +117,9 @@ void expectSame(const ShotResult& a, const ShotResult& b) {
     EXPECT_EQ(a.samples[k].pocketed, b.samples[k].pocketed);
     EXPECT_EQ(a.samples[k].pocket, b.samples[k].pocket);
     EXPECT_TRUE(sameBits(a.samples[k].fell_at_s, b.samples[k].fell_at_s));
-    if (!a.samples[k].pocketed) EXPECT_TRUE(sameBits(a.samples[k].state, b.samples[k].state));
+    if (!a.samples[k].pocketed) {
+      EXPECT_TRUE(sameBits(a.samples[k].state, b.samples[k].state));
+    }
   }
 }
 

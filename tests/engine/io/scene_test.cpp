@@ -538,7 +538,7 @@ TEST(ScenePhysics, SimpleCushionModelReboundsHeadOnAtETimesTheIncomingSpeed) {
 
 // The paper scheme chosen in the scene: the same hit as the exact solver's to within its
 // first-order error, at most about 2.8 V0 / N (one Euler increment; see
-// tests/engine/sim/cushion_contact_test.cpp), taken as 4 V0 / N.
+// tests/engine/models/cushion_paper_model_test.cpp), taken as 4 V0 / N.
 TEST(ScenePhysics, PaperCushionModelAgreesWithTheExactSolverToItsFirstOrderError) {
   constexpr double kPaperErrorPerStep = 4.0;
   constexpr int kSteps = 500;
@@ -590,8 +590,11 @@ TEST(ScenePhysics, BallBallModelChoiceReachesTheCollisions) {
   doc["balls"]["1"] = {0.0, 0.02};
   const Scene scene = sceneFromJson(doc, "test.json");
   const SimulationParams p = simulationParamsFor(scene);
-  ASSERT_EQ(p.ball_ball.model, physics::BallBallModel::Mathavan2014);
-  EXPECT_EQ(p.ball_ball.cloth_friction, p.cloth.sliding_friction) << "one cloth";
+  ASSERT_STREQ(p.ball_ball->name(), "mathavan2014");
+  physics::BallBallParams direct_params;
+  direct_params.model = physics::BallBallModel::Mathavan2014;
+  direct_params.ball_friction = 0.06;
+  direct_params.cloth_friction = p.cloth.sliding_friction;  // one cloth
   const SceneRun run = runScene(scene);
   const Event& hit = firstEventOf(run.result, EventKind::BallBall);
   const physics::BallVelocity a{hit.before[0].velocity, hit.before[0].angular_velocity};
@@ -600,7 +603,7 @@ TEST(ScenePhysics, BallBallModelChoiceReachesTheCollisions) {
                          hit.before[1].position.y() - hit.before[0].position.y(), 0);
   normal.normalize();
   const physics::BallBallImpactResult direct =
-      physics::resolveBallBallImpact(p.ball_ball, a, b, normal);
+      physics::resolveBallBallImpact(direct_params, a, b, normal);
   EXPECT_EQ(hit.after[0].velocity, direct.ball1.v);
   EXPECT_EQ(hit.after[1].velocity, direct.ball2.v);
 }
@@ -617,10 +620,9 @@ TEST(ScenePhysics, PhysicsEchoReadsBackToTheSameParameters) {
   const SimulationParams p = simulationParamsFor(first);
   const physics::CueStrikeParams cue = cueStrikeParamsFor(first);
   EXPECT_EQ(p.cloth.sliding_friction, 0.25);
-  EXPECT_EQ(p.cushion.cloth_friction, 0.25) << "one cloth";
-  EXPECT_EQ(p.cushion_model, CushionModelChoice::Mathavan2010Paper);
-  EXPECT_EQ(p.cushion_paper_steps, 300);
-  EXPECT_EQ(p.ball_ball.constant_friction, 0.04);
+  EXPECT_STREQ(p.cushion->name(), "paper");
+  EXPECT_EQ(p.cushion->parametersJson()["paper_steps"], 300);
+  EXPECT_EQ(p.ball_ball->parametersJson()["constant_friction"], 0.04);
   EXPECT_EQ(cue.end_mass_kg, 0.012);
   EXPECT_EQ(p.max_events, 5000);
   const nlohmann::json echo = physicsJson(p, cue);

@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "engine/sim/cushion_contact.h"
+#include "engine/models/model_registry.h"
 #include "engine/io/scene.h"
 #include "engine/sim/shot_simulator.h"
 
@@ -181,8 +181,7 @@ TEST(CushionSolveAhead, TheWorkerSolvesInTheCallersRoundingMode) {
 
 TEST(CushionSolveAhead, TheMathavan2010PaperSchemeIsSolvedAheadToTheSameBits) {
   Scene scene = shippedScene("9-ball-break");
-  scene.overrides.cushion_model = CushionModelChoice::Mathavan2010Paper;
-  scene.overrides.paper_steps = 500;
+  scene.overrides.cushion = nlohmann::json{{"model", "paper"}, {"paper_steps", 500}};
   expectTheSameBitsWithImpactsTakenAhead(scene, oneCoreBits(scene), 10);
 }
 
@@ -284,7 +283,7 @@ TEST_F(HandOver, TheWorkersAnswerIsTakenForTheSameInput) {
          std::chrono::steady_clock::now() - start < kPatience) {
     const long taken = worker_.impactsTakenAhead();
     const auto [answer, held] = handOver(incoming(1), incoming(1));
-    EXPECT_TRUE(sameBits(answer, resolveCushionContact(params_, incoming(1))));
+    EXPECT_TRUE(sameBits(answer, params_.cushion->resolve(params_, incoming(1))));
     if (twoCores()) {
       ASSERT_TRUE(held);
     }
@@ -298,8 +297,8 @@ TEST_F(HandOver, AnotherInputIsSolvedByTheLoop) {
   physics::BallVelocity actual = incoming(1);
   actual.v.x() = std::nextafter(actual.v.x(), 2.0);  // one bit off the prediction
   const auto [answer, held] = handOver(incoming(1), actual);
-  EXPECT_TRUE(sameBits(answer, resolveCushionContact(params_, actual)));
-  EXPECT_FALSE(sameBits(answer, resolveCushionContact(params_, incoming(1))));
+  EXPECT_TRUE(sameBits(answer, params_.cushion->resolve(params_, actual)));
+  EXPECT_FALSE(sameBits(answer, params_.cushion->resolve(params_, incoming(1))));
   if (twoCores()) {
     ASSERT_TRUE(held);
   }
@@ -311,7 +310,7 @@ TEST_F(HandOver, AnImpactTheModelRefusesFailsInTheLoopWithTheModelsError) {
   away.v.y() = -away.v.y();  // moving away from the cushion: the model refuses it
   std::string loop_message;
   try {
-    resolveCushionContact(params_, away);
+    params_.cushion->resolve(params_, away);
   } catch (const std::invalid_argument& e) {
     loop_message = e.what();
   }
@@ -339,7 +338,7 @@ TEST_F(HandOver, MorePredictionsThanJobsAreSolvedByTheLoop) {
     for (int k = 0; k < kBalls; ++k) ahead.predict(k, 1.0 + k, incoming(k));
     for (int k = 0; k < kBalls; ++k) {
       EXPECT_TRUE(
-          sameBits(ahead.resolve(k, incoming(k)), resolveCushionContact(params_, incoming(k))))
+          sameBits(ahead.resolve(k, incoming(k)), params_.cushion->resolve(params_, incoming(k))))
           << "ball " << k;
     }
   });

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/models/model_registry.h"
 #include "engine/sim/shot_simulator.h"
 #include "engine/io/table.h"
 
@@ -61,7 +62,7 @@ struct Contact {
 struct Checker {
   SimulationParams params = poolSimulationParams();
   TableGeometry table = rectangularTable(kTableLength_m, kTableWidth_m);
-  double R = params.cushion.radius_m;
+  double R = params.ball.radius_m;
 
   Checker() = default;
   explicit Checker(TableGeometry geometry) : table(std::move(geometry)) {}

@@ -9,9 +9,9 @@
 #include <random>
 #include <string>
 
+#include "engine/models/model_registry.h"
 #include "engine/io/ball_set.h"
 #include "engine/sim/contact_geometry.h"
-#include "engine/sim/cushion_contact.h"
 #include "engine/io/rack.h"
 #include "engine/io/table.h"
 
@@ -43,7 +43,7 @@ double energy(const physics::ClothParams& cloth, const BallState& b) {
 // The invariants every event keeps: nothing gains energy, and colliding balls touch at 2R. Returns
 // how many ball-ball events there were.
 int expectEventInvariants(const SimulationParams& p, const SimulationResult& r) {
-  const double R = p.cushion.radius_m;
+  const double R = p.ball.radius_m;
   int collisions = 0;
   for (const Event& e : r.events) {
     double before = 0, after = 0;
@@ -81,7 +81,7 @@ TEST(ShotSimulator, StunShotSlidesRollsAndStopsWhereTheClosedFormSays) {
 // so v_table = (v_y', -v_x') and w_table = (w_y', -w_x', w_z').
 TEST(ShotSimulator, HeadOnCushionHitEqualsTheCushionModelCalledDirectly) {
   const SimulationParams p = poolSimulationParams();
-  const double R = p.cushion.radius_m;
+  const double R = p.ball.radius_m;
   BallState ball = ballAt(0.5, 0, 1.2, 0);
   ball.angular_velocity = {0, 1.2 / R, 0};  // rolling along +x: v + R z x w = 0
   const SimulationResult r = simulate(p, rectangularTable(2.0, 1.0), {ball});
@@ -92,13 +92,13 @@ TEST(ShotSimulator, HeadOnCushionHitEqualsTheCushionModelCalledDirectly) {
   const BallState& before = hit->before[0];
   EXPECT_NEAR(before.position.x(), 1.0 - R, kContactTolerance_m);
   const double V = before.velocity.x();
-  const physics::CushionImpactResult model = physics::solveCushionImpactExact(
-      p.cushion, physics::incomingBall(V, M_PI / 2, V / R, 0), p.cushion_solver);
+  const physics::BallVelocity model =
+      p.cushion->resolve(p, physics::incomingBall(V, M_PI / 2, V / R, 0));
   const BallState& after = hit->after[0];
-  EXPECT_NEAR(after.velocity.x(), model.after.v.y(), kCushionAccuracy * V);
-  EXPECT_NEAR(after.velocity.y(), -model.after.v.x(), kCushionAccuracy * V);
-  EXPECT_NEAR(after.angular_velocity.x(), model.after.w.y(), kCushionAccuracy * V / R);
-  EXPECT_NEAR(after.angular_velocity.y(), -model.after.w.x(), kCushionAccuracy * V / R);
+  EXPECT_NEAR(after.velocity.x(), model.v.y(), kCushionAccuracy * V);
+  EXPECT_NEAR(after.velocity.y(), -model.v.x(), kCushionAccuracy * V);
+  EXPECT_NEAR(after.angular_velocity.x(), model.w.y(), kCushionAccuracy * V / R);
+  EXPECT_NEAR(after.angular_velocity.y(), -model.w.x(), kCushionAccuracy * V / R);
   EXPECT_LT(after.velocity.x(), 0) << "it comes back";
 }
 
@@ -106,10 +106,11 @@ TEST(ShotSimulator, HeadOnCushionHitEqualsTheCushionModelCalledDirectly) {
 // hit with e = 1 hands the whole velocity over (equal masses).
 TEST(ShotSimulator, HeadOnBallHitHappensAtTouchingDistanceAndExchangesVelocities) {
   SimulationParams p = poolSimulationParams();
-  p.ball_ball.restitution = 1;
-  p.ball_ball.friction_law = physics::BallBallFrictionLaw::Constant;
-  p.ball_ball.constant_friction = 0;
-  const double R = p.cushion.radius_m;
+  p.ball_ball = ballBallModels().read(
+      JsonReader({{"restitution", 1}, {"friction_law", "constant"}, {"constant_friction", 0}},
+                 "test"),
+      ModelDefaults{});
+  const double R = p.ball.radius_m;
   const SimulationResult r =
       simulate(p, rectangularTable(20, 10), {ballAt(-2, 0, 2, 0), ballAt(0, 0)});
   const auto hit = std::find_if(r.events.begin(), r.events.end(),
@@ -127,10 +128,11 @@ TEST(ShotSimulator, HeadOnBallHitHappensAtTouchingDistanceAndExchangesVelocities
 // at theta from its first line with tan theta = sin phi cos phi / (sin^2 phi + 2/5): 33.67 deg.
 TEST(ShotSimulator, ThirtyDegreeRuleHoldsThroughTheWholeLoop) {
   SimulationParams p = poolSimulationParams();
-  p.ball_ball.restitution = 1;
-  p.ball_ball.friction_law = physics::BallBallFrictionLaw::Constant;
-  p.ball_ball.constant_friction = 0;
-  const double R = p.cushion.radius_m, v0 = 1.5;
+  p.ball_ball = ballBallModels().read(
+      JsonReader({{"restitution", 1}, {"friction_law", "constant"}, {"constant_friction", 0}},
+                 "test"),
+      ModelDefaults{});
+  const double R = p.ball.radius_m, v0 = 1.5;
   BallState cue = ballAt(-1, R, v0, 0);  // offset by R from the object ball's line: half-ball
   cue.angular_velocity = {0, v0 / R, 0};  // natural roll along +x
   const SimulationResult r = simulate(p, rectangularTable(20, 10), {cue, ballAt(0, 0)});
@@ -155,7 +157,7 @@ TEST(ShotSimulator, ThirtyDegreeRuleHoldsThroughTheWholeLoop) {
 // balls are 2R apart, and every ball ends on the table without overlapping another.
 TEST(ShotSimulator, RandomScenesKeepEnergyFallingAndBallsApartAndOnTheTable) {
   SimulationParams p = poolSimulationParams();
-  const double R = p.cushion.radius_m, L = 2.54, W = 1.27;
+  const double R = p.ball.radius_m, L = 2.54, W = 1.27;
   const TableGeometry table = rectangularTable(L, W);
   std::mt19937_64 engine(20261121);
   auto uniform = [&](double lo, double hi) {
@@ -321,7 +323,7 @@ TEST(ShotSimulator, TrajectoriesSampledAtEventsGiveTheEventStates) {
 // the part of the circle outside the jaw's angular range passes through.
 TEST(ShotSimulator, AJawActsAsACushionAlongItsContactNormalWithinItsRange) {
   const SimulationParams p = poolSimulationParams();
-  const double R = p.cushion.radius_m, rho = 0.01;
+  const double R = p.ball.radius_m, rho = 0.01;
   TableGeometry table;
   table.jaws.push_back({{1.0, 0.0}, rho, M_PI / 2, 3 * M_PI / 2});  // faces -x
   BallState ball = ballAt(0, 0, 1.5, 0);
@@ -332,9 +334,9 @@ TEST(ShotSimulator, AJawActsAsACushionAlongItsContactNormalWithinItsRange) {
   ASSERT_NE(hit, r.events.end());
   EXPECT_NEAR(hit->before[0].position.x(), 1.0 - rho - R, kContactTolerance_m);
   const double V = hit->before[0].velocity.x();
-  const physics::CushionImpactResult model = physics::solveCushionImpactExact(
-      p.cushion, physics::incomingBall(V, M_PI / 2, V / R, 0), p.cushion_solver);
-  EXPECT_NEAR(hit->after[0].velocity.x(), model.after.v.y(), kCushionAccuracy * V);
+  const physics::BallVelocity model =
+      p.cushion->resolve(p, physics::incomingBall(V, M_PI / 2, V / R, 0));
+  EXPECT_NEAR(hit->after[0].velocity.x(), model.v.y(), kCushionAccuracy * V);
   TableGeometry back;
   back.jaws.push_back({{1.0, 0.0}, rho, -M_PI / 2, M_PI / 2});  // faces +x: the ball meets its back
   for (const Event& e : simulate(p, back, {ball}).events) EXPECT_NE(e.kind, EventKind::Jaw);
@@ -385,7 +387,7 @@ TEST(ShotSimulator, ContactNormalGivesTheFrameOfEveryCushionImpact) {
       ++impacts;
       jaws += e.kind == EventKind::Jaw;
       BallState expected = before;
-      frame.toTable(resolveCushionContact(p, local), &expected);
+      frame.toTable(p.cushion->resolve(p, local), &expected);
       same += expected.velocity == e.after[0].velocity &&
               expected.angular_velocity == e.after[0].angular_velocity;
     }
@@ -400,7 +402,7 @@ TEST(ShotSimulator, ContactNormalGivesTheFrameOfEveryCushionImpact) {
   TableGeometry jaw;
   jaw.jaws.push_back({{1.0, 0.0}, 0.01, M_PI / 2, 3 * M_PI / 2});  // faces -x
   BallState ball = ballAt(0, 0.02, 1.5, 0);
-  ball.angular_velocity = {0, 1.5 / p.cushion.radius_m, 0};  // rolling
+  ball.angular_velocity = {0, 1.5 / p.ball.radius_m, 0};  // rolling
   check(jaw, {ball});
   EXPECT_GE(impacts, 10) << "the break meets the cushions";
   EXPECT_GE(jaws, 1) << "the lone jaw is met";
@@ -430,11 +432,11 @@ TEST(ShotSimulator, ABallComingToRestARoundingEarlyIsPredictedAgain) {
 // impulses average to N: B's speed after the push must match v*, and nothing may overlap.
 TEST(ShotSimulator, ABallPushedByASpinningBallMovesAsTheLastingContactSays) {
   SimulationParams p = poolSimulationParams();
-  p.ball_ball.friction_law = physics::BallBallFrictionLaw::Constant;
-  p.ball_ball.constant_friction = 0;
+  p.ball_ball = ballBallModels().read(
+      JsonReader({{"friction_law", "constant"}, {"constant_friction", 0}}, "test"), ModelDefaults{});
   p.cloth.rolling_friction = 1e-4;  // small, so that B's sliding spells barely matter (see below)
   p.record_trajectories = true;
-  const double R = p.cushion.radius_m, g = p.cloth.gravity_mps2, mu = p.cloth.sliding_friction;
+  const double R = p.ball.radius_m, g = p.cloth.gravity_mps2, mu = p.cloth.sliding_friction;
   const double u0 = 1.0;  // m/s
   BallState a = ballAt(0, 0), b = ballAt(2 * R, 0);
   a.angular_velocity = {0, u0 / R, 0};  // contact point moving -x: friction drives A along +x
@@ -467,7 +469,7 @@ TEST(ShotSimulator, ABallPushedByASpinningBallMovesAsTheLastingContactSays) {
 TEST(ShotSimulator, ABallPressedIntoACushionSlidesAlongItAndStops) {
   SimulationParams p = poolSimulationParams();
   p.record_trajectories = true;
-  const double R = p.cushion.radius_m, L = 2.54, W = 1.27;
+  const double R = p.ball.radius_m, L = 2.54, W = 1.27;
   BallState ball = ballAt(L / 2 - R, 0, 0, 1.0);  // against the +x cushion, moving along it
   ball.angular_velocity = {0, 20.0, 5.0};         // w_y > 0: friction drives it along +x
   const SimulationResult r = simulate(p, rectangularTable(L, W), {ball});
@@ -617,7 +619,7 @@ std::vector<BallState> crowdAroundTheMiddle(int columns, int rows) {
 // random all over the table.
 TEST(ShotSimulator, ABallNearACushionOrJawGetsTheSameVerdictAloneAndInACrowd) {
   const SimulationParams p = poolSimulationParams();
-  const double R = p.cushion.radius_m;
+  const double R = p.ball.radius_m;
   // Offsets (m) from the rejection boundary: below the 1e-9 m contact slack, and just beyond the
   // margins (1e-6 m) a shortcut near the boundary might use.
   const double offsets_m[] = {-1e-5, -2e-6, -1e-6, -1e-8, 0, 1e-8, 1e-6, 2e-6, 1e-5};
@@ -667,7 +669,7 @@ TEST(ShotSimulator, ABallNearACushionOrJawGetsTheSameVerdictAloneAndInACrowd) {
 // radius plus R, within its range, is inside it; so many balls are all checked.
 TEST(ShotSimulator, BallsJustBeyondACushionOrInsideAJawAreRejectedInACrowd) {
   const SimulationParams p = poolSimulationParams();
-  const double R = p.cushion.radius_m, step_m = 1e-6;
+  const double R = p.ball.radius_m, step_m = 1e-6;
   const TableGeometry table = geometryOf(builtinTable("pool-9ft"));
   std::vector<BallState> balls = crowdAroundTheMiddle(7, 5);
   for (std::size_t k = 0; k < table.cushions.size(); ++k) {
@@ -700,7 +702,7 @@ TEST(ShotSimulator, BallsJustBeyondACushionOrInsideAJawAreRejectedInACrowd) {
 // strike ball 1, placed along that axis, so that balls start moving and stop among the crowd.
 TEST(ShotSimulator, ACrowdOfRestingBallsTheShotNeverReachesChangesNothing) {
   const SimulationParams p = poolSimulationParams();
-  const double R = p.cushion.radius_m;
+  const double R = p.ball.radius_m;
   const TableGeometry table = geometryOf(builtinTable("pool-9ft"));
   std::vector<BallState> crowd;
   for (int c = 0; c < 10; ++c) {

@@ -1,0 +1,38 @@
+#include "engine/models/cushion_mathavan2010.h"
+
+namespace baize::engine {
+
+const std::vector<std::string>& mathavan2010Keys() {
+  static const std::vector<std::string> keys = {"restitution", "friction", "contact_height_m"};
+  return keys;
+}
+
+Mathavan2010Cushion readMathavan2010(const ModelDefaults& defaults, const JsonReader* parameters) {
+  Mathavan2010Cushion model;
+  model.contact_height_m = defaults.cushion_contact_height_m;
+  if (!parameters) return model;
+  if (parameters->has("restitution")) model.restitution = parameters->finiteNumber("restitution");
+  if (parameters->has("friction")) model.cushion_friction = parameters->finiteNumber("friction");
+  if (parameters->has("contact_height_m"))
+    model.contact_height_m = parameters->finiteNumber("contact_height_m");
+  return model;
+}
+
+physics::CushionParams impactParams(const Mathavan2010Cushion& model, const SimulationParams& shot) {
+  physics::CushionParams params;
+  params.mass_kg = shot.ball.mass_kg;
+  params.radius_m = shot.ball.radius_m;
+  params.contact_height_m = model.contact_height_m;
+  params.restitution = model.restitution;
+  params.cushion_friction = model.cushion_friction;
+  params.cloth_friction = shot.cloth.sliding_friction;  // one cloth
+  return params;
+}
+
+void writeMathavan2010(const Mathavan2010Cushion& model, nlohmann::json* out) {
+  (*out)["restitution"] = model.restitution;
+  (*out)["friction"] = model.cushion_friction;
+  (*out)["contact_height_m"] = model.contact_height_m;
+}
+
+}  // namespace baize::engine
