@@ -16,8 +16,8 @@
 
 namespace baize::physics {
 
-// Constants of one impact; they never change while it runs. Defaults: the Mathavan 2010 paper's snooker
-// values.
+// Constants of one impact; they never change while it runs. Defaults: the Mathavan 2010 paper's
+// snooker values.
 struct CushionParams {
   double mass_kg = 0.1406;
   double radius_m = 0.02625;
@@ -73,9 +73,9 @@ struct BallVelocity {
 };
 
 // The incoming ball of the paper's Fig. 2, with the spins assigned the physically right way round
-// (the Mathavan 2010 text prints them swapped): v = V0 (cos a, sin a, 0), w = (-wT sin a, wT cos a, wS).
-// alpha is measured from the cushion line (pi/2 is head-on); topspin wT = V0/R is natural roll;
-// positive sidespin is counter-clockwise seen from above.
+// (the Mathavan 2010 text prints them swapped): v = V0 (cos a, sin a, 0), w = (-wT sin a, wT cos a,
+// wS). alpha is measured from the cushion line (pi/2 is head-on); topspin wT = V0/R is natural
+// roll; positive sidespin is counter-clockwise seen from above.
 BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_radps,
                           double sidespin_radps);
 

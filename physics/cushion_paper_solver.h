@@ -1,7 +1,8 @@
-// The Mathavan 2010 paper's numerical scheme (section 3.4): explicit Euler in the cushion normal impulse P
-// with a fixed increment dP = (1 + e_e) M v_y0 / N, friction directions frozen over each increment,
-// and trapezoidal accumulation of the normal work (eq. 17a). First order: its error shrinks as 1/N.
-// Kept as the reference that reproduces the publication; the exact solver is the one to use.
+// The Mathavan 2010 paper's numerical scheme (section 3.4): explicit Euler in the cushion normal
+// impulse P with a fixed increment dP = (1 + e_e) M v_y0 / N, friction directions frozen over each
+// increment, and trapezoidal accumulation of the normal work (eq. 17a). First order: its error
+// shrinks as 1/N. Kept as the reference that reproduces the publication; the exact solver is the
+// one to use.
 #pragma once
 
 #include "physics/cushion_model.h"

@@ -1,8 +1,9 @@
-// The simplest ball-cushion rule, kept to compare against the Mathavan 2010 model (cushion_exact_solver.h):
-// the velocity component into the cushion reverses and is scaled by a restitution e; the component
-// along the cushion and the whole angular velocity are kept. No friction acts at the nose or on the
-// cloth, so the rebound angle does not depend on spin and sidespin does not throw the ball; the
-// only loss is (1 - e^2) of the normal part of the translational energy, so energy never grows.
+// The simplest ball-cushion rule, kept to compare against the Mathavan 2010 model
+// (cushion_exact_solver.h): the velocity component into the cushion reverses and is scaled by a
+// restitution e; the component along the cushion and the whole angular velocity are kept. No
+// friction acts at the nose or on the cloth, so the rebound angle does not depend on spin and
+// sidespin does not throw the ball; the only loss is (1 - e^2) of the normal part of the
+// translational energy, so energy never grows.
 //
 // Frame and units as in cushion_model.h: the local cushion frame (x along the cushion, y into it,
 // z up); SI units.

@@ -1,7 +1,7 @@
 // A table as a player sees it from above, as draw items (render/draw_items.h): the wooden rail,
 // the cushion rubber, the pocket holes, the cloth bounded by the real cushion outline (rails,
-// jaws and facings from engine/io/table.h), diamonds and spots on pool tables, the baulk line, the D
-// and the spots on snooker tables.
+// jaws and facings from engine/io/table.h), diamonds and spots on pool tables, the baulk line, the
+// D and the spots on snooker tables.
 #pragma once
 
 #include <vector>

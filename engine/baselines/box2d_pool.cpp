@@ -36,8 +36,8 @@ constexpr double kShortestEdgeSlops = 2.0;
 // Ends of cushion pieces closer than this join into one chain, m: the table builder makes them
 // meet to rounding.
 constexpr double kJoinTolerance_m = 1e-6;
-// Head-on speed for calibrating the cushion restitution, m/s: within the range where the Mathavan 2010
-// model is linear in speed (any speed gives the same ratio).
+// Head-on speed for calibrating the cushion restitution, m/s: within the range where the Mathavan
+// 2010 model is linear in speed (any speed gives the same ratio).
 constexpr double kCalibrationSpeed_mps = 1.0;
 // Slip speed in Alciatore's fit at which the constant ball-ball friction is taken, m/s: a typical
 // cut shot between 0.5 and 2 m/s.
@@ -292,9 +292,8 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
   world.SetAllowSleeping(false);
   const engine::RigidCushionContact cushion = p.cushion->rigidContact(p);
   const engine::RigidBallContact ball_ball = p.ball_ball->rigidContact(p, kBallFrictionSlip_mps);
-  ContactRecorder recorder(calibratedCushionRestitution(p), cushion.friction,
-                           ball_ball.restitution, ball_ball.friction,
-                           kRestitutionThreshold_mps / unit_m);
+  ContactRecorder recorder(calibratedCushionRestitution(p), cushion.friction, ball_ball.restitution,
+                           ball_ball.friction, kRestitutionThreshold_mps / unit_m);
   engine::SimulationResult result;
   recorder.events = &result.events;
   recorder.unit_m = unit_m;
@@ -350,7 +349,8 @@ engine::SimulationResult simulateBox2d(const engine::SimulationParams& p,
     b2MassData mass_data;
     mass_data.mass = static_cast<float>(mass);
     mass_data.center.SetZero();
-    mass_data.I = static_cast<float>(engine::BallProperties::kInertiaFactor * mass * (R / unit_m) * (R / unit_m));
+    mass_data.I = static_cast<float>(engine::BallProperties::kInertiaFactor * mass * (R / unit_m) *
+                                     (R / unit_m));
     balls[i].body->SetMassData(&mass_data);
     balls[i].horizontal_spin_radps = input[i].angular_velocity.head<2>();
   }

@@ -23,12 +23,13 @@
 //   none, at the equator). Box2D resolves the contact at the ball's equator; the
 //   horizontal impulse it applied is then also applied, as torque on the kept horizontal spin, at
 //   the real nose height (that is how a cushion takes topspin off). What it still misses: the
-//   friction at the nose and the cloth during the impact, which the Mathavan 2010 model integrates, so the
-//   spin after a rebound is off (for a rolling head-on hit it takes off too much topspin).
+//   friction at the nose and the cloth during the impact, which the Mathavan 2010 model integrates,
+//   so the spin after a rebound is off (for a rolling head-on hit it takes off too much topspin).
 // - Ball-ball contacts get Newton restitution e and Coulomb friction from the chosen ball-ball
-//   model's RigidBallContact (the frictional model: Alciatore's fitted mu at a 1 m/s slip); Box2D's friction changes only the spin about z. The
-//   vertical friction of topspin or draw at the contact, which throws spin onto the object ball in
-//   the event loop's model, has no place in a 2D contact: missing.
+//   model's RigidBallContact (the frictional model: Alciatore's fitted mu at a 1 m/s slip); Box2D's
+//   friction changes only the spin about z. The vertical friction of topspin or draw at the
+//   contact, which throws spin onto the object ball in the event loop's model, has no place in a 2D
+//   contact: missing.
 // - Pockets: a ball whose centre is inside a capture circle after a step is removed.
 // - Units: Box2D's tolerances are compiled in (5 mm linear slop, 1 cm edge skin at one unit per
 //   metre) and it clamps any body to 2 units of travel per step. One Box2D unit is therefore

@@ -173,8 +173,8 @@ void FixedStepper::resolve(const Contact& c) {
     BallState& b = balls_[c.other].state;
     event.before.push_back(b);
     const physics::BallBallImpactResult impact =
-        p_.ball_ball->resolve(p_, {a.velocity, a.angular_velocity}, {b.velocity, b.angular_velocity},
-                              Eigen::Vector3d(n.x(), n.y(), 0));
+        p_.ball_ball->resolve(p_, {a.velocity, a.angular_velocity},
+                              {b.velocity, b.angular_velocity}, Eigen::Vector3d(n.x(), n.y(), 0));
     a.velocity = impact.ball1.v;
     a.angular_velocity = impact.ball1.w;
     b.velocity = impact.ball2.v;

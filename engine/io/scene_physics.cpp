@@ -64,7 +64,8 @@ PhysicsOverrides readPhysicsOverrides(const JsonReader& physics) {
   PhysicsOverrides o;
   if (physics.has("cloth")) readCloth(physics.object("cloth"), &o);
   o.source = physics.source();
-  if (physics.has("cushion")) o.cushion = readModelGroup(cushionModels(), physics.object("cushion"));
+  if (physics.has("cushion"))
+    o.cushion = readModelGroup(cushionModels(), physics.object("cushion"));
   if (physics.has("ball_ball"))
     o.ball_ball = readModelGroup(ballBallModels(), physics.object("ball_ball"));
   if (physics.has("cue")) readCue(physics.object("cue"), &o);
@@ -78,7 +79,8 @@ void applyPhysicsOverrides(const PhysicsOverrides& o, const ModelDefaults& defau
   setIf(o.rolling_friction, &p->cloth.rolling_friction);
   setIf(o.spinning_friction, &p->cloth.spinning_friction);
   if (o.cushion) {
-    p->cushion = cushionModels().read(JsonReader(*o.cushion, o.source, "physics.cushion"), defaults);
+    p->cushion =
+        cushionModels().read(JsonReader(*o.cushion, o.source, "physics.cushion"), defaults);
   }
   if (o.ball_ball) {
     p->ball_ball =

@@ -39,8 +39,8 @@ PocketSpec readPocketSpec(const JsonReader& pocket) {
   // folds back along its rail (no real pocket: 100 to 145 degrees), and near it the pocket's
   // entrance degenerates (a probe found balls escaping the capture check within 1e-4 deg of 180).
   if (!(facing_angle_deg > 90 && facing_angle_deg <= kMaxFacingAngle_deg)) {
-    pocket.reject("facing_angle_deg", "it must lie in (90, " + physics::valueText(kMaxFacingAngle_deg) +
-                                          "] degrees");
+    pocket.reject("facing_angle_deg",
+                  "it must lie in (90, " + physics::valueText(kMaxFacingAngle_deg) + "] degrees");
   }
   spec.facing_angle_rad = facing_angle_deg * kRadiansPerDegree;
   spec.jaw_radius_m = pocket.positiveNumber("jaw_radius_m");
@@ -333,7 +333,8 @@ std::vector<std::vector<Vector2d>> entranceCovers(const CushionSegment& entry,
   const Vector2d a = entry.end_m, b = exit.start_m;
   const double across = cross(entry.inward_normal, exit.inward_normal);
   if (std::abs(across) > kParallelFacings) {
-    const double s_meet = cross(b - a, exit.inward_normal) / across;  // a + s n_entry = b + t n_exit
+    const double s_meet =
+        cross(b - a, exit.inward_normal) / across;  // a + s n_entry = b + t n_exit
     const Vector2d meet = a + s_meet * entry.inward_normal;
     if (s_meet > 0 && (meet - a).dot(outward) < 0) {
       if (!(s_meet > R)) return {};  // the lines meet within R of the deep ends: no way in
@@ -349,9 +350,9 @@ std::vector<std::vector<Vector2d>> entranceCovers(const CushionSegment& entry,
     const double slack = kBesideSlack_m * along.norm();
     const auto beside = linearWithin(along.dot(a - facing->start_m), along.dot(b - a), -slack,
                                      along.squaredNorm() + slack);
-    const auto near = linearWithin(facing->inward_normal.dot(a - facing->start_m),
-                                   facing->inward_normal.dot(b - a),
-                                   -std::numeric_limits<double>::infinity(), R);
+    const auto near =
+        linearWithin(facing->inward_normal.dot(a - facing->start_m),
+                     facing->inward_normal.dot(b - a), -std::numeric_limits<double>::infinity(), R);
     held.push_back({std::max(beside.first, near.first), std::min(beside.second, near.second)});
   }
   std::sort(held.begin(), held.end());
@@ -423,7 +424,8 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
         lo = std::max(lo, depth - std::sqrt(half_width_sq));
         hi = std::min(hi, depth + std::sqrt(half_width_sq));
       }
-      if (hi - std::max(lo, 0.0) > offset_hi - std::max(offset_lo, 0.0)) offset_lo = lo, offset_hi = hi;
+      if (hi - std::max(lo, 0.0) > offset_hi - std::max(offset_lo, 0.0))
+        offset_lo = lo, offset_hi = hi;
     }
     const double lowest_offset = offset_lo < 0 ? 0 : roundedLimit(offset_lo, true);
     const double highest_offset = roundedLimit(offset_hi, false);
@@ -435,9 +437,9 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
     const std::string key = std::string(corner ? "corner_pocket" : "side_pocket") +
                             (offset_would_do ? ".capture_offset_m" : ".capture_radius_m");
     const double value = offset_would_do ? spec.capture_offset_m : spec.capture_radius_m;
-    const std::string other = offset_would_do
-                                  ? "capture_radius_m = " + physics::valueText(r)
-                                  : "capture_offset_m = " + physics::valueText(spec.capture_offset_m);
+    const std::string other =
+        offset_would_do ? "capture_radius_m = " + physics::valueText(r)
+                        : "capture_offset_m = " + physics::valueText(spec.capture_offset_m);
     std::string allowed =
         "with " + other + " and balls of radius " + physics::valueText(R) +
         " m, a ball can run between the facings of pocket " + std::to_string(k) + " (" +

@@ -12,8 +12,9 @@ using physics::BallBallFrictionLaw;
 // Refuses `key` when it is given but does not go with the friction law chosen.
 void requireLaw(const JsonReader& parameters, const char* key, bool applies, const char* law) {
   if (parameters.has(key) && !applies) {
-    parameters.reject(key, std::string("it applies only to model \"frictional\" with friction_law \"") +
-                               law + "\"");
+    parameters.reject(
+        key,
+        std::string("it applies only to model \"frictional\" with friction_law \"") + law + "\"");
   }
 }
 

@@ -19,8 +19,7 @@ class FrictionalBallBallModel final : public BallBallContactModel {
                                         const physics::BallVelocity& first,
                                         const physics::BallVelocity& second,
                                         const Eigen::Vector3d& normal) const override;
-  RigidBallContact rigidContact(const SimulationParams& shot,
-                                double slip_speed_mps) const override;
+  RigidBallContact rigidContact(const SimulationParams& shot, double slip_speed_mps) const override;
   nlohmann::json parametersJson() const override;
 
  private:

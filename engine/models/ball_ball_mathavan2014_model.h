@@ -20,8 +20,7 @@ class Mathavan2014BallBallModel final : public BallBallContactModel {
                                         const physics::BallVelocity& second,
                                         const Eigen::Vector3d& normal) const override;
   // The ball-on-ball friction mu_b, whatever the slip.
-  RigidBallContact rigidContact(const SimulationParams& shot,
-                                double slip_speed_mps) const override;
+  RigidBallContact rigidContact(const SimulationParams& shot, double slip_speed_mps) const override;
   nlohmann::json parametersJson() const override;
 
  private:

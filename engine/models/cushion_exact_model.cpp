@@ -30,8 +30,8 @@ ModelEntry<CushionContactModel> exactCushionModel() {
             physics::ExactSolverOptions solver;
             if (parameters && parameters->has("tolerance"))
               solver.tolerance = parameters->finiteNumber("tolerance");
-            return std::make_shared<const ExactCushionModel>(
-                readMathavan2010(defaults, parameters), solver);
+            return std::make_shared<const ExactCushionModel>(readMathavan2010(defaults, parameters),
+                                                             solver);
           }};
 }
 

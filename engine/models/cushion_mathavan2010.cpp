@@ -18,7 +18,8 @@ Mathavan2010Cushion readMathavan2010(const ModelDefaults& defaults, const JsonRe
   return model;
 }
 
-physics::CushionParams impactParams(const Mathavan2010Cushion& model, const SimulationParams& shot) {
+physics::CushionParams impactParams(const Mathavan2010Cushion& model,
+                                    const SimulationParams& shot) {
   physics::CushionParams params;
   params.mass_kg = shot.ball.mass_kg;
   params.radius_m = shot.ball.radius_m;

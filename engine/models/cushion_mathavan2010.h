@@ -15,8 +15,8 @@ namespace baize::engine {
 
 // The Mathavan 2010 model's own parameters; the ball and cloth come from the shot.
 struct Mathavan2010Cushion {
-  double contact_height_m = 0;                                 // h, nose above the slate
-  double restitution = physics::CushionParams{}.restitution;  // e_e
+  double contact_height_m = 0;                                          // h, nose above the slate
+  double restitution = physics::CushionParams{}.restitution;            // e_e
   double cushion_friction = physics::CushionParams{}.cushion_friction;  // mu_w
 };
 

@@ -27,7 +27,8 @@ physics::BallVelocity PaperCushionModel::resolve(const SimulationParams& shot,
   const physics::CushionParams params = impactParams(model_, shot);
   physics::PaperSolverOptions options;
   options.steps = steps_;
-  const physics::BallVelocity after = physics::solveCushionImpactPaper(params, incoming, options).after;
+  const physics::BallVelocity after =
+      physics::solveCushionImpactPaper(params, incoming, options).after;
   // The paper's Euler scheme is first order: with too few increments it can hand back more
   // energy than the ball brought, and the shot would go on from a state no impact makes.
   const double before_J = physics::kineticEnergy(params, incoming);

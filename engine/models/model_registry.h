@@ -52,7 +52,7 @@ class ModelRegistry {
   void add(ModelEntry<Model> entry);
 
   const ModelEntry<Model>* find(const std::string& name) const;  // null when unknown
-  std::vector<std::string> names() const;                         // in registration order
+  std::vector<std::string> names() const;                        // in registration order
   const std::string& defaultName() const { return default_name_; }
   // The names as messages list them: "\"exact\", \"paper\" or \"simple\"".
   std::string namesText() const;

@@ -70,9 +70,9 @@ std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Sc
   }
   // The Mathavan 2010 parameters of the shots' table and balls (random shots override none).
   if (!shots.empty()) {
-    *params = engine::impactParams(
-        engine::readMathavan2010(engine::modelDefaultsFor(shots[0]), nullptr),
-        engine::simulationParamsFor(shots[0]));
+    *params =
+        engine::impactParams(engine::readMathavan2010(engine::modelDefaultsFor(shots[0]), nullptr),
+                             engine::simulationParamsFor(shots[0]));
   }
   return impacts;
 }

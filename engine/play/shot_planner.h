@@ -1,6 +1,6 @@
 // Shot planning for positional play (docs/positional.md, "baize plan"): the cue speed, aim and tip
-// offsets most likely, under execution error (engine/play/execution_noise.h), to pot one ball in one
-// pocket and leave the cue ball on the table, in a region when one is given. The search counts
+// offsets most likely, under execution error (engine/play/execution_noise.h), to pot one ball in
+// one pocket and leave the cue ball on the table, in a region when one is given. The search counts
 // every simulated shot against a budget; a blind grid of the same budget is here too, as the
 // baseline the planner is compared with.
 #pragma once
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/play/execution_noise.h"
 #include "engine/io/scene.h"
+#include "engine/play/execution_noise.h"
 #include "engine/play/shot_outcome.h"
 #include "engine/play/shot_suite.h"
 #include "physics/cue_strike.h"

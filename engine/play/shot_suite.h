@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/play/execution_noise.h"
 #include "engine/io/scene.h"
+#include "engine/play/execution_noise.h"
 #include "engine/play/shot_outcome.h"
 
 namespace baize::engine {

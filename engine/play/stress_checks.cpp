@@ -61,7 +61,7 @@ void ShotCheck::fail(const std::string& kind, const std::string& message) {
 }
 
 StressShotOutcome checkShot(const StressTable& table, const engine::SimulationParams& params,
-                      const std::vector<BallState>& input) {
+                            const std::vector<BallState>& input) {
   StressShotOutcome out;
   ShotCheck& check = out.check;
   engine::SimulationResult result;

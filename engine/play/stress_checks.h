@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/play/stress_tables.h"
 #include "engine/sim/shot_simulator.h"
 #include "physics/cloth_motion.h"
-#include "engine/play/stress_tables.h"
 
 namespace baize::engine {
 
@@ -34,6 +34,6 @@ struct StressShotOutcome {
 
 // Simulates `balls` on `table` with `params` and checks every event.
 StressShotOutcome checkShot(const StressTable& table, const engine::SimulationParams& params,
-                      const std::vector<physics::BallState>& balls);
+                            const std::vector<physics::BallState>& balls);
 
 }  // namespace baize::engine

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "engine/io/scene.h"
-#include "physics/cloth_motion.h"
 #include "engine/play/stress_tables.h"
+#include "physics/cloth_motion.h"
 
 namespace baize::engine {
 

@@ -25,8 +25,8 @@
 
 #include "engine/io/ball_set.h"
 #include "engine/io/scene.h"
-#include "engine/sim/shot_simulator.h"
 #include "engine/io/table.h"
+#include "engine/sim/shot_simulator.h"
 
 namespace baize::engine {
 

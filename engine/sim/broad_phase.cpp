@@ -4,16 +4,16 @@
 
 namespace baize::engine {
 
-RestingGrid::RestingGrid(const std::vector<int>& indices, const std::vector<physics::BallState>& balls,
-                       double R) {
+RestingGrid::RestingGrid(const std::vector<int>& indices,
+                         const std::vector<physics::BallState>& balls, double R) {
   if (indices.empty()) return;
   Eigen::AlignedBox2d extent;
   for (int i : indices) extent.extend(balls[i].position);
   origin_m_ = extent.min();
   const Eigen::Vector2d size = extent.sizes();
   const double per_cell = static_cast<double>(indices.size()) * kGridCellsPerBall;
-  cell_m_ = std::max({kGridCellRadii * R, std::sqrt(size.x() * size.y() / per_cell),
-                      size.maxCoeff() / per_cell});
+  cell_m_ = std::max(
+      {kGridCellRadii * R, std::sqrt(size.x() * size.y() / per_cell), size.maxCoeff() / per_cell});
   columns_ = cellOf(extent.max().x(), origin_m_.x(), kMaxCells) + 1;
   rows_ = cellOf(extent.max().y(), origin_m_.y(), kMaxCells) + 1;
   // Counting sort of the balls by cell: cell c holds members_[first_[c]] to

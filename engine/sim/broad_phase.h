@@ -21,9 +21,10 @@ constexpr double kBoxMargin_m = 1e-9;
 
 // |c + l t + q t^2 - centre|^2 - distance^2 as coefficients in t.
 inline physics::PolynomialCoefficients squaredGap(const physics::PositionQuadratic& path,
-                                  const Eigen::Vector2d& centre,
-                                  const Eigen::Vector2d& linear_other,
-                                  const Eigen::Vector2d& quadratic_other, double distance) {
+                                                  const Eigen::Vector2d& centre,
+                                                  const Eigen::Vector2d& linear_other,
+                                                  const Eigen::Vector2d& quadratic_other,
+                                                  double distance) {
   const Eigen::Vector2d c = path.constant_m - centre;
   const Eigen::Vector2d l = path.linear_mps - linear_other;
   const Eigen::Vector2d q = path.quadratic_mps2 - quadratic_other;
@@ -54,8 +55,8 @@ inline LowestValue quadraticLowestValue(double c0, double c1, double c2, double 
 // from it over [0, horizon]: its distance is at least its projection on the starting direction,
 // a quadratic whose lowest value is exact. (Balls moving apart or passing wide, a ball heading away
 // from a pocket: no quartic to solve.)
-inline bool staysFarther(const Eigen::Vector2d& c, const Eigen::Vector2d& l, const Eigen::Vector2d& q,
-                  double distance, double horizon) {
+inline bool staysFarther(const Eigen::Vector2d& c, const Eigen::Vector2d& l,
+                         const Eigen::Vector2d& q, double distance, double horizon) {
   const double start = c.norm();
   if (!(start > distance) || !std::isfinite(horizon)) return false;
   const Eigen::Vector2d direction = c / start;
@@ -102,7 +103,8 @@ struct Box {
 // is not finite).
 inline Box sweptBox(const physics::PositionQuadratic& path, double duration, double R) {
   if (!std::isfinite(duration))
-    return {Eigen::Vector2d::Constant(-std::numeric_limits<double>::infinity()), Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity())};
+    return {Eigen::Vector2d::Constant(-std::numeric_limits<double>::infinity()),
+            Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity())};
   Box box = Box::spanning(path.constant_m, path.at(duration));
   for (int axis = 0; axis < 2; ++axis) {
     const double q = path.quadratic_mps2[axis];

@@ -30,9 +30,9 @@ bool besideSegment(const CushionSegment& cushion, const Eigen::Vector2d& q);
 // The contact normal (unit, from the cushion or jaw to the ball) of a Cushion or Jaw event whose
 // ball is centred at `position`: a straight cushion's inward normal, or the direction from the
 // jaw's centre to the ball. The cushion model works in the frame it sets (ContactFrame,
-// engine/sim/contact_geometry.h): the event's `before` ball in that frame is the model's input where
-// it moves into the cushion (v.y > 0; otherwise there is no impact: the ball touches it moving
-// along or away, perhaps pressed against it).
+// engine/sim/contact_geometry.h): the event's `before` ball in that frame is the model's input
+// where it moves into the cushion (v.y > 0; otherwise there is no impact: the ball touches it
+// moving along or away, perhaps pressed against it).
 Eigen::Vector2d contactNormal(const TableGeometry& table, EventKind kind, int index,
                               const Eigen::Vector2d& position);
 

@@ -187,8 +187,7 @@ void CushionImpactWorker::serveWhileAwake(bool can_move) {
     int core = core_.load(std::memory_order_relaxed);
     if (turn % kCpuCheckTurns == 0) {
       core = sched_getcpu();
-      if (can_move && !moved_ && core >= 0 &&
-          core == waker_core_.load(std::memory_order_relaxed)) {
+      if (can_move && !moved_ && core >= 0 && core == waker_core_.load(std::memory_order_relaxed)) {
         moveOffCore(core);
         core = sched_getcpu();
       }

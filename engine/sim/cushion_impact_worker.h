@@ -89,12 +89,12 @@ class CushionImpactWorker {
   void serveWhileAwake(bool can_move);
   void keepAwake();
 
-  alignas(64) std::atomic<bool> claimed_{false};  // a shot holds the worker
-  std::atomic<bool> serving_{false};              // and may queue jobs
-  std::atomic<bool> awake_{false};                // spinning, not asleep
-  std::atomic<bool> stopping_{false};             // the destructor runs
-  alignas(64) std::atomic<int> core_{-1};         // where the worker last ran
-  std::atomic<int> waker_core_{-1};               // where the last wake-up came from
+  alignas(64) std::atomic<bool> claimed_{false};                // a shot holds the worker
+  std::atomic<bool> serving_{false};                            // and may queue jobs
+  std::atomic<bool> awake_{false};                              // spinning, not asleep
+  std::atomic<bool> stopping_{false};                           // the destructor runs
+  alignas(64) std::atomic<int> core_{-1};                       // where the worker last ran
+  std::atomic<int> waker_core_{-1};                             // where the last wake-up came from
   std::atomic<std::chrono::steady_clock::rep> awake_until_{0};  // awake at least until then
   alignas(64) std::atomic<int> used_shared_{0};  // jobs [0, used) handed out in this shot
   int used_ = 0;                                 // the same, the loop's copy

@@ -38,10 +38,10 @@ class CushionSolveAhead {
 
  private:
   const SimulationParams& params_;
-  CushionImpactWorker* worker_;           // handed over by the caller, or null
-  CushionImpactWorker* held_ = nullptr;   // the worker, held for this shot
-  bool claim_tried_ = false;              // asked once per shot, at its first prediction
-  std::vector<int> job_of_ball_;          // the worker's job holding each ball's prediction; -1: none
+  CushionImpactWorker* worker_;          // handed over by the caller, or null
+  CushionImpactWorker* held_ = nullptr;  // the worker, held for this shot
+  bool claim_tried_ = false;             // asked once per shot, at its first prediction
+  std::vector<int> job_of_ball_;  // the worker's job holding each ball's prediction; -1: none
 };
 
 }  // namespace baize::engine

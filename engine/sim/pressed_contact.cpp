@@ -13,8 +13,7 @@ void releasePressedContact(const BallProperties& ball, double energy_before_J,
   auto spinEnergy = [&](const physics::BallVelocity& b) {
     return kineticEnergy(ball, {Eigen::Vector3d::Zero(), b.w});
   };
-  const double energy =
-      kineticEnergy(ball, *first) + (second ? kineticEnergy(ball, *second) : 0);
+  const double energy = kineticEnergy(ball, *first) + (second ? kineticEnergy(ball, *second) : 0);
   const double spin = spinEnergy(*first) + (second ? spinEnergy(*second) : 0);
   // Spin paid out is spin * (1 - scale^2); keep a rounding margin so energy cannot grow.
   const double budget = (spin + energy_before_J - energy) * (1 - kEnergyBudgetMargin);
@@ -33,8 +32,8 @@ void releasePressedContact(const BallProperties& ball, double energy_before_J,
   } else {
     first->v += boost * normal;
   }
-  const double excess = kineticEnergy(ball, *first) +
-                        (second ? kineticEnergy(ball, *second) : 0) - energy_before_J;
+  const double excess =
+      kineticEnergy(ball, *first) + (second ? kineticEnergy(ball, *second) : 0) - energy_before_J;
   if (excess <= 0) return;
   const double scale = std::sqrt(std::max(0.0, 1 - excess / spin));
   first->w *= scale;

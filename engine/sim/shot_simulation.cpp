@@ -179,10 +179,9 @@ BallState ShotSimulation::ballAt(int i) const {
 void ShotSimulation::prepareNext() {
   while (prediction_due_) {
     if (passes_ == params_.max_events) {
-      throw std::runtime_error(
-          "the shot did not come to rest within max_events = " +
-          std::to_string(params_.max_events) + " events (at t = " + physics::valueText(now_) +
-          " s)");
+      throw std::runtime_error("the shot did not come to rest within max_events = " +
+                               std::to_string(params_.max_events) +
+                               " events (at t = " + physics::valueText(now_) + " s)");
     }
     ++passes_;
     predictChanged();
@@ -309,9 +308,10 @@ void ShotSimulation::predictPairsOf(int i) {
 
 void ShotSimulation::refreshEarliest() {
   for (int k : active_) {
-    rescanned_[k] = is_changed_[k] || (next_of_[k].dt_s < kInfinity &&
-                                       (is_changed_[next_of_[k].ball] ||
-                                        (next_of_[k].other >= 0 && is_changed_[next_of_[k].other])));
+    rescanned_[k] =
+        is_changed_[k] || (next_of_[k].dt_s < kInfinity &&
+                           (is_changed_[next_of_[k].ball] ||
+                            (next_of_[k].other >= 0 && is_changed_[next_of_[k].other])));
     if (rescanned_[k]) rescan(k);
   }
   // The others gain the changed balls' new pairs (their finite ones: all in partners_ now).
@@ -478,8 +478,8 @@ void ShotSimulation::predictPockets(int i, double* horizon, PredictedEvent* best
       ++result_.skipped_predictions;
       continue;
     }
-    const PolynomialCoefficients gap = squaredGap(
-        path, pocket.centre_m, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), pocket.radius_m);
+    const PolynomialCoefficients gap = squaredGap(path, pocket.centre_m, Eigen::Vector2d::Zero(),
+                                                  Eigen::Vector2d::Zero(), pocket.radius_m);
     const physics::RootSearchResult hit = solveGap(gap, *horizon);
     const PredictedEvent candidate{hit.time, EventKind::Pocket, i, -1, k};
     if (hit.outcome == physics::RootOutcome::Root && candidate < *best_own) *best_own = candidate;
@@ -594,8 +594,8 @@ void ShotSimulation::moveToEvent(int i) {
   if (dt > 0) b.state = physics::advanceWithinState(params_.cloth, b.state, dt);
 }
 
-// The chosen cushion model (engine/sim/cushion_contact_model.h) in the frame of the contact normal, or
-// the worker's answer from the same input.
+// The chosen cushion model (engine/sim/cushion_contact_model.h) in the frame of the contact normal,
+// or the worker's answer from the same input.
 void ShotSimulation::resolveCushionContact(Event* event) {
   Track& ball = balls_[event->ball];
   BallState& a = ball.state;
@@ -621,9 +621,9 @@ void ShotSimulation::resolveBallContact(Event* event) {
   const physics::BallVelocity va{a.velocity, a.angular_velocity},
       vb{b.velocity, b.angular_velocity};
   const bool approaching = physics::approachSpeed(va, vb, normal) > 0;
-  const bool pressed = (balls_[event->ball].path.quadratic_mps2 -
-                        balls_[event->other].path.quadratic_mps2)
-                           .dot(normal.head<2>()) > 0;
+  const bool pressed =
+      (balls_[event->ball].path.quadratic_mps2 - balls_[event->other].path.quadratic_mps2)
+          .dot(normal.head<2>()) > 0;
   if (!(approaching || pressed)) return;
   physics::BallVelocity a_after = va, b_after = vb;
   if (approaching) {
@@ -633,9 +633,9 @@ void ShotSimulation::resolveBallContact(Event* event) {
     b_after = impact.ball2;
   }
   if (pressed) {
-    releasePressedContact(
-        params_.ball, kineticEnergy(params_.ball, va) + kineticEnergy(params_.ball, vb),
-        normal, &a_after, &b_after);
+    releasePressedContact(params_.ball,
+                          kineticEnergy(params_.ball, va) + kineticEnergy(params_.ball, vb), normal,
+                          &a_after, &b_after);
   }
   a.velocity = a_after.v;
   a.angular_velocity = a_after.w;

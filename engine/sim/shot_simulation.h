@@ -158,7 +158,7 @@ class ShotSimulation {
   // either changes), so the next event is the earliest candidate of a ball that moves or has an
   // event of its own ahead (a spinning ball's stop): only those "active" balls' earliest
   // candidates are kept, and a resting ball costs nothing per event.
-  std::vector<int> active_, movers_;  // movers_: the active balls that move
+  std::vector<int> active_, movers_;         // movers_: the active balls that move
   std::vector<char> is_active_, rescanned_;  // rescanned_: its candidate found anew
   // The balls resting at the start, by place; those that come to rest later are looked at one by
   // one (a few at most, in practice).

@@ -1,6 +1,7 @@
-// simulate(): one shot from its start to rest through the event loop (engine/sim/shot_simulation.h),
-// the call most programs need. This header brings the whole simulation API: the parameters, the
-// table geometry, the input checks, the events and results, and the steppable loop itself.
+// simulate(): one shot from its start to rest through the event loop
+// (engine/sim/shot_simulation.h), the call most programs need. This header brings the whole
+// simulation API: the parameters, the table geometry, the input checks, the events and results, and
+// the steppable loop itself.
 #pragma once
 
 #include <string>

@@ -195,8 +195,8 @@ void checkNoOverlaps(const std::vector<BallState>& balls, double R, const Namer&
                         j = std::min(by_x[m].ball, by_x[k].ball);
       const double gap = (balls[i].position - balls[j].position).norm() - 2 * R;
       if (gap < -kContactSlack_m) {
-        physics::rejectValue(who(i) + " overlaps " + who(j) + ": their gap (m)",
-                             gap, "balls may touch but not overlap (gap >= 0)");
+        physics::rejectValue(who(i) + " overlaps " + who(j) + ": their gap (m)", gap,
+                             "balls may touch but not overlap (gap >= 0)");
       }
     }
   }
@@ -264,10 +264,10 @@ void requireOnTable(const TableGeometry& table, const Event& event, int ball, bo
     return;
   }
   throw BallLeftTableError(
-      ballName(ids, static_cast<std::size_t>(ball)) + " left the table: at t = " +
-      physics::valueText(event.time_s) + " s (a " + eventKindName(event.kind) +
-      " event) its centre [" + physics::valueText(state.position.x()) + ", " +
-      physics::valueText(state.position.y()) +
+      ballName(ids, static_cast<std::size_t>(ball)) +
+      " left the table: at t = " + physics::valueText(event.time_s) + " s (a " +
+      eventKindName(event.kind) + " event) its centre [" + physics::valueText(state.position.x()) +
+      ", " + physics::valueText(state.position.y()) +
       "] m is outside the table's cushion outline and not in a pocket (a capture circle that "
       "does not cover its pocket's opening lets balls through)");
 }

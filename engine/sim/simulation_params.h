@@ -19,7 +19,7 @@ struct SimulationParams {
   // The cloth. Its radius_m is the physics struct's copy of ball.radius_m (physics/ is pure and
   // takes it there); simulate() refuses the two differing.
   physics::ClothParams cloth = physics::poolCloth();
-  std::shared_ptr<const CushionContactModel> cushion;    // every cushion and jaw hit
+  std::shared_ptr<const CushionContactModel> cushion;     // every cushion and jaw hit
   std::shared_ptr<const BallBallContactModel> ball_ball;  // every ball-ball collision
   long max_events = 100000;          // a shot needing more stops with an error saying so
   bool record_trajectories = false;  // fill SimulationResult::trajectories (costs memory only)

@@ -50,11 +50,15 @@ Eigen::AlignedBox2d railBoxInsideOutline(const std::vector<Vector2d>& outline) {
     const Vector2d& q = outline[(i + 1) % n];
     // Counterclockwise: the inside lies to the left of each edge.
     if (p.y() == q.y() && p.x() != q.x()) {
-      if (q.x() > p.x()) box.min().y() = std::max(box.min().y(), p.y());
-      else box.max().y() = std::min(box.max().y(), p.y());
+      if (q.x() > p.x())
+        box.min().y() = std::max(box.min().y(), p.y());
+      else
+        box.max().y() = std::min(box.max().y(), p.y());
     } else if (p.x() == q.x() && p.y() != q.y()) {
-      if (q.y() > p.y()) box.max().x() = std::min(box.max().x(), p.x());
-      else box.min().x() = std::max(box.min().x(), p.x());
+      if (q.y() > p.y())
+        box.max().x() = std::min(box.max().x(), p.x());
+      else
+        box.min().x() = std::max(box.min().x(), p.x());
     }
   }
   const Vector2d inset(kRailBoxInset_m, kRailBoxInset_m);

@@ -1,7 +1,8 @@
-// Fuzz target: engine::resultFromJson on arbitrary bytes. Bytes that are not JSON are refused by the
-// JSON parser (its exceptions are fine); a document is either refused with std::invalid_argument or
-// read, and a result read must be written and read again to the same document (one writer, one
-// reader, bit for bit). Any other exception, a crash or a hang is a finding.
+// Fuzz target: engine::resultFromJson on arbitrary bytes. Bytes that are not JSON are refused by
+// the JSON parser (its exceptions are fine); a document is either refused with
+// std::invalid_argument or read, and a result read must be written and read again to the same
+// document (one writer, one reader, bit for bit). Any other exception, a crash or a hang is a
+// finding.
 #include <cstddef>
 #include <cstdint>
 #include <nlohmann/json.hpp>

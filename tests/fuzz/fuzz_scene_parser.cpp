@@ -88,8 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The paper's Euler scheme at few steps may add energy at a cushion (first order:
     // docs/cushion.md); the other models may not.
     const bool euler_cushion =
-        paper &&
-        (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw);
+        paper && (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw);
     fuzz::check(
         euler_cushion || after <= before * (1 + kEnergyRelativeTolerance) + kEnergyFloor_Jpkg,
         std::string("energy grew at a ") + engine::eventKindName(e.kind) + " event");

@@ -48,7 +48,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   nlohmann::json cushion = {{"model", cushion_models[in.integer(0, 2)]}};
   const int paper_steps = in.integer(1, kMaxFuzzPaperSteps);
   if (cushion["model"] == "paper") cushion["paper_steps"] = paper_steps;
-  p.cushion = engine::cushionModels().read(engine::JsonReader(cushion, "fuzz"), engine::ModelDefaults{});
+  p.cushion =
+      engine::cushionModels().read(engine::JsonReader(cushion, "fuzz"), engine::ModelDefaults{});
   p.ball_ball = engine::ballBallModels().make(in.integer(0, 1) ? "mathavan2014" : "frictional",
                                               engine::ModelDefaults{});
   if (in.byte() % 4 == 0) {  // another cloth, within the allowed ranges

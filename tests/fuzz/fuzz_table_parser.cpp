@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "engine/sim/shot_simulator.h"
 #include "engine/io/table.h"
+#include "engine/sim/shot_simulator.h"
 #include "tests/fuzz/fuzz_json.h"
 #include "tests/fuzz/fuzz_support.h"
 

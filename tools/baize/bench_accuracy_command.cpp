@@ -14,13 +14,13 @@
 #include <set>
 #include <sstream>
 
+#include "engine/baselines/box2d_pool.h"
 #include "engine/baselines/fixed_step_simulator.h"
 #include "engine/io/scene.h"
+#include "engine/play/random_shots.h"
 #include "tools/baize/atomic_file.h"
-#include "engine/baselines/box2d_pool.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/median.h"
-#include "engine/play/random_shots.h"
 
 namespace baize::tools {
 namespace {
@@ -227,8 +227,8 @@ std::vector<Configuration> configurations() {
   std::vector<Configuration> list;
   list.push_back({"event", "exact",
                   [](const Shot& s) { return engine::simulate(s.params, s.table, s.balls); }});
-  // The event loop with the Mathavan 2010 cushion model solved to looser tolerances (the setting names
-  // them as `baize bench cushion` does): what accuracy of each impact buys in whole shots.
+  // The event loop with the Mathavan 2010 cushion model solved to looser tolerances (the setting
+  // names them as `baize bench cushion` does): what accuracy of each impact buys in whole shots.
   for (const double tolerance : kLooserCushionTolerances) {
     std::ostringstream setting;
     setting << "tol=" << tolerance;

@@ -10,12 +10,12 @@
 #include <sstream>
 #include <string>
 
+#include "engine/play/random_shots.h"
 #include "physics/value_text.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_bench.h"
 #include "tools/baize/cushion_param_flags.h"
-#include "engine/play/random_shots.h"
 
 namespace baize::tools {
 namespace {

@@ -11,13 +11,13 @@
 #include <optional>
 #include <sstream>
 
-#include "engine/sim/cushion_impact_worker.h"
 #include "engine/io/scene.h"
+#include "engine/play/random_shots.h"
+#include "engine/sim/cushion_impact_worker.h"
 #include "physics/cushion_exact_solver.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/median.h"
-#include "engine/play/random_shots.h"
 
 namespace baize::tools {
 namespace {
@@ -101,9 +101,9 @@ void runBenchShots(const BenchShotsFlags& flags) {
   const auto withTolerance = [&](engine::Scene scene) {
     // The tolerance is the exact model's: a scene that chose another model keeps it.
     if (flags.cushion_tolerance) {
-      nlohmann::json& cushion = scene.overrides.cushion ? *scene.overrides.cushion
-                                                        : scene.overrides.cushion.emplace(
-                                                              nlohmann::json::object());
+      nlohmann::json& cushion = scene.overrides.cushion
+                                    ? *scene.overrides.cushion
+                                    : scene.overrides.cushion.emplace(nlohmann::json::object());
       if (cushion.value("model", engine::cushionModels().defaultName()) == "exact")
         cushion["tolerance"] = *flags.cushion_tolerance;
     }

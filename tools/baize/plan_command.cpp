@@ -22,7 +22,8 @@ constexpr double kDegToRad = M_PI / 180;
 // Fresh samples per reported shot allowed: a bound that keeps a typo from running for hours.
 constexpr int kMaxNoiseSamples = 1000000;
 constexpr long kMaxBudget = 100000000;  // shots; likewise
-// The re-estimates use streams apart from the search's (engine/play/shot_planner.cpp uses up to 2^33).
+// The re-estimates use streams apart from the search's (engine/play/shot_planner.cpp uses up to
+// 2^33).
 constexpr std::uint64_t kFreshStreamBase = 1ull << 40;
 
 struct PlanFlags {
@@ -114,7 +115,8 @@ void requireRegionOnTable(const engine::CueBallRegion& region, const std::string
        << "] m";
   throw UsageError("--region " + spec +
                    " is not allowed: it lies wholly off the table, where the cue ball cannot "
-                   "stop; its centre stops within " + area.str() + " on " + scene.table.name);
+                   "stop; its centre stops within " +
+                   area.str() + " on " + scene.table.name);
 }
 
 std::string shotText(const physics::CueShot& s) {

@@ -11,8 +11,8 @@
 
 #include "engine/io/result_file.h"
 #include "engine/io/scene.h"
-#include "engine/play/shot_outcome.h"
 #include "engine/io/table.h"
+#include "engine/play/shot_outcome.h"
 #include "render/shot_record.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
@@ -25,8 +25,8 @@ struct SimulateFlags {
   std::string scene;
   std::string json_path;
   std::vector<std::string> samples;  // "BALL@TIME_S"
-  std::string cushion_model;          // empty: the scene's
-  std::string ball_ball_model;        // empty: the scene's
+  std::string cushion_model;         // empty: the scene's
+  std::string ball_ball_model;       // empty: the scene's
   PictureFlags pictures;
 };
 
@@ -38,10 +38,11 @@ engine::Scene withFlaggedModels(engine::Scene scene, const SimulateFlags& flags)
     scene.overrides.cushion = nlohmann::json{{"model", flags.cushion_model}};
   if (!flags.ball_ball_model.empty())
     scene.overrides.ball_ball = nlohmann::json{{"model", flags.ball_ball_model}};
-  engine::validateScenePhysics(engine::simulationParamsFor(scene), engine::cueStrikeParamsFor(scene),
-                               scene.source, [] {
-                                 return std::string("the scene with --cushion-model or "
-                                                    "--ball-ball-model");
+  engine::validateScenePhysics(engine::simulationParamsFor(scene),
+                               engine::cueStrikeParamsFor(scene), scene.source, [] {
+                                 return std::string(
+                                     "the scene with --cushion-model or "
+                                     "--ball-ball-model");
                                });
   return scene;
 }
@@ -183,7 +184,8 @@ void addSimulateCommand(CLI::App& parent) {
       "simulate", "Strike a scene's cue ball and simulate the shot until every ball is at rest");
   command->add_option("scene", flags->scene, "the scene file (JSON, see docs/scenes.md)")
       ->required();
-  command->add_option("--json", flags->json_path, "also write the result file here (docs/results.md)")
+  command
+      ->add_option("--json", flags->json_path, "also write the result file here (docs/results.md)")
       ->check(notEmpty());
   command->add_option("--sample", flags->samples,
                       "print (and with --json write) BALL's state at TIME_S seconds after the "

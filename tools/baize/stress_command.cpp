@@ -20,11 +20,11 @@
 
 #include "engine/io/json_reader.h"
 #include "engine/io/scene.h"
+#include "engine/play/stress_checks.h"
+#include "engine/play/stress_shots.h"
 #include "physics/cue_strike.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
-#include "engine/play/stress_checks.h"
-#include "engine/play/stress_shots.h"
 
 namespace baize::tools {
 namespace {
@@ -182,7 +182,8 @@ Replay loadReplay(const std::string& path) {
 // shared counter and finishes every shot it takes, so when the time budget stops the run the shots
 // done are exactly a first run of numbers, and each shot's result depends on (seed, shot) alone:
 // the summary is the same for any thread count.
-Tally runShots(const StressFlags& flags, const engine::StressTables& tables, bool* stopped_by_budget) {
+Tally runShots(const StressFlags& flags, const engine::StressTables& tables,
+               bool* stopped_by_budget) {
   std::atomic<long> next{0};
   std::atomic<bool> stop{false};
   std::mutex progress_mutex;
@@ -213,8 +214,8 @@ Tally runShots(const StressFlags& flags, const engine::StressTables& tables, boo
         params.max_events = flags.max_events;
         outcome = engine::checkShot(tables.of(made.table), params, made.balls);
       } catch (const std::exception& e) {
-        // Not a failure of the event loop (engine::checkShot records those) but of this program: stop the
-        // run and say which shot, rather than let the thread end the process.
+        // Not a failure of the event loop (engine::checkShot records those) but of this program:
+        // stop the run and say which shot, rather than let the thread end the process.
         tally->error = "shot " + std::to_string(shot) + ": " + e.what();
         stop = true;
         return;
@@ -252,7 +253,8 @@ void runReplay(const StressFlags& flags) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--replay: ") + e.what());
   }
-  const engine::StressShotOutcome outcome = engine::checkShot(replay.table, replay.params, replay.balls);
+  const engine::StressShotOutcome outcome =
+      engine::checkShot(replay.table, replay.params, replay.balls);
   std::cout << "replay: " << flags.replay_path << ", table " << replay.table.name << ", balls "
             << replay.balls.size() << ", events " << outcome.events << ", ";
   if (!outcome.check.failed()) {
@@ -302,7 +304,8 @@ void runStress(const StressFlags& flags) {
       file.commit();
       // The file must make the same failure again, read back as --replay reads it.
       const Replay replay = loadReplay(written);
-      const engine::StressShotOutcome again = engine::checkShot(replay.table, replay.params, replay.balls);
+      const engine::StressShotOutcome again =
+          engine::checkShot(replay.table, replay.params, replay.balls);
       if (again.check.first_message != f.check.first_message) ++not_reproduced;
     }
     if (++reported > kMaxReportedShots) continue;
@@ -373,9 +376,9 @@ void addStressCommand(CLI::App& parent) {
       ->add_option("--failures", flags->failures_dir,
                    "write a reproduction of every failing shot into this directory")
       ->check(notEmpty());
-  command->add_option(
-      "--replay", flags->replay_path,
-      "check the one shot of a reproduction file (a scene or a state file) instead")
+  command
+      ->add_option("--replay", flags->replay_path,
+                   "check the one shot of a reproduction file (a scene or a state file) instead")
       ->check(notEmpty());
   command->callback([flags] {
     if (const int status = runReportingErrors("stress", [&] { runStress(*flags); })) {

@@ -10,8 +10,8 @@
 #include <optional>
 #include <sstream>
 
-#include "engine/play/execution_noise.h"
 #include "engine/io/scene.h"
+#include "engine/play/execution_noise.h"
 #include "engine/play/shot_outcome.h"
 #include "engine/play/shot_suite.h"
 #include "physics/cue_strike.h"
@@ -165,8 +165,8 @@ Axis parseAxis(const std::string& spec) {
     return reject("speeds must lie in (0, " + physics::valueText(physics::kMaxCueSpeed_mps) +
                   "] m/s, as a scene's");
   }
-  if (axis.name == "aim" && !(std::abs(axis.start) <= kMaxAimOffset_deg &&
-                              std::abs(axis.stop) <= kMaxAimOffset_deg)) {
+  if (axis.name == "aim" &&
+      !(std::abs(axis.start) <= kMaxAimOffset_deg && std::abs(axis.stop) <= kMaxAimOffset_deg)) {
     return reject("aim offsets must lie in [-1e6, 1e6] deg, as a scene's heading");
   }
   axis.count =
@@ -297,9 +297,10 @@ void addSweepCommand(CLI::App& parent) {
       ->allow_extra_args(false);
   command->add_option("--csv", flags->csv_path, "write the CSV here (default: standard output)")
       ->check(notEmpty());
-  command->add_option("--object", flags->object,
-                      "the ball whose pocketing object_pocketed reports (default: any ball but "
-                      "the cue ball)")
+  command
+      ->add_option("--object", flags->object,
+                   "the ball whose pocketing object_pocketed reports (default: any ball but "
+                   "the cue ball)")
       ->check(notEmpty());
   command->add_option("--noise", flags->noise_samples,
                       "also run N samples per point with the default execution error and write "

@@ -5,10 +5,10 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <limits>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -209,7 +209,8 @@ class Viewer {
     session_->advanceTo(playback_.time_s());
     if (!session_->atRest()) return;
     playback_.setEndTime(session_->shot().end_time_s);
-    if (session_->failure()) std::cerr << "baize-view: the shot failed: " << *session_->failure() << '\n';
+    if (session_->failure())
+      std::cerr << "baize-view: the shot failed: " << *session_->failure() << '\n';
   }
 
   bool canAim() const { return session_.has_value() && session_->atRest() && playback_.atEnd(); }
@@ -259,8 +260,7 @@ class Viewer {
       title << playback_.endTime_s();
     else
       title << "...";
-    title << " s  x" << playback_.speed()
-          << (playback_.playing() ? "" : "  (paused)");
+    title << " s  x" << playback_.speed() << (playback_.playing() ? "" : "  (paused)");
     if (session_) {
       title << "  |  cue " << session_->cue().speed_mps << " m/s, side "
             << session_->cue().side_offset << " R, height " << session_->cue().height_offset << " R"

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "engine/models/model_registry.h"
 #include "engine/io/table.h"
+#include "engine/models/model_registry.h"
 
 namespace baize::engine {
 namespace {

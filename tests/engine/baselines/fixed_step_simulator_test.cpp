@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "engine/models/model_registry.h"
 #include "engine/io/scene.h"
 #include "engine/io/table.h"
+#include "engine/models/model_registry.h"
 #include "tests/engine/error_test_support.h"
 
 namespace baize::engine {
@@ -186,7 +186,8 @@ TEST(FixedStepSimulator, HeadOnHitUsesTheBallBallModel) {
     if (e.kind == EventKind::BallBall && hit == nullptr) hit = &e;
   ASSERT_NE(hit, nullptr);
   const double v_in = hit->before[0].velocity.x();
-  EXPECT_NEAR(hit->after[1].velocity.x(), (1 + p.ball_ball->rigidContact(p, 0).restitution) / 2 * v_in, 1e-12);
+  EXPECT_NEAR(hit->after[1].velocity.x(),
+              (1 + p.ball_ball->rigidContact(p, 0).restitution) / 2 * v_in, 1e-12);
 }
 
 TEST(FixedStepSimulator, RejectsBadStepsAndBadBalls) {

@@ -151,7 +151,8 @@ TEST(JsonReader, MessagesShowKeysEscapedAndShort) {
   document[std::string("a\0b", 3)] = 1;
   document[std::string(300, 'k')] = 2;
   const JsonReader reader(document, "doc");
-  const std::string nul = invalidArgumentMessage([&] { reader.reject(std::string("a\0b", 3), "no"); });
+  const std::string nul =
+      invalidArgumentMessage([&] { reader.reject(std::string("a\0b", 3), "no"); });
   EXPECT_MENTIONS(nul, "doc: a\\u0000b = 1 is not allowed: no");
   const std::string long_key =
       invalidArgumentMessage([&] { reader.reject(std::string(300, 'k'), "no"); });

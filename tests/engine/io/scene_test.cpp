@@ -507,8 +507,8 @@ TEST(ScenePhysics, SlidingFrictionOverrideShortensTheSlideAsTheClosedFormSays) {
   }
 }
 
-// The Mathavan 2010 model's restitution in the scene: a head-on rolling ball comes back slower with a
-// lower e_e (the rebound's normal speed grows with e_e at fixed friction).
+// The Mathavan 2010 model's restitution in the scene: a head-on rolling ball comes back slower with
+// a lower e_e (the rebound's normal speed grows with e_e at fixed friction).
 TEST(ScenePhysics, LowerCushionRestitutionGivesASlowerRebound) {
   double previous_rebound_mps = 0;
   for (double e_e : {0.98, 0.7}) {

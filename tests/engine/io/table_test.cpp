@@ -13,8 +13,8 @@
 #include <tuple>
 #include <vector>
 
-#include "engine/models/model_registry.h"
 #include "engine/io/ball_set.h"
+#include "engine/models/model_registry.h"
 #include "engine/sim/shot_simulator.h"
 #include "tests/engine/error_test_support.h"
 

@@ -1,10 +1,10 @@
 // Tests of ball-ball model "frictional": the physics model's result with the shot's ball and cloth,
 // the friction law's keys refused with the other law, and the echo reading back.
-#include "engine/models/model_registry.h"
 #include "engine/models/ball_ball_frictional_model.h"
 
 #include <gtest/gtest.h>
 
+#include "engine/models/model_registry.h"
 #include "tests/engine/error_test_support.h"
 #include "tests/engine/models/model_test_support.h"
 
@@ -37,7 +37,9 @@ TEST(BallBallFrictionalModel, TheOtherLawsKeysAreRefused) {
                   }),
                   "physics.ball_ball.friction_fit_a = 0.01 is not allowed: it applies only to "
                   "model \"frictional\" with friction_law \"alciatore\"");
-  EXPECT_MENTIONS(invalidArgumentMessage([] { ballBallModel({{"friction_law", "coulomb"}}); }),
+  EXPECT_MENTIONS(invalidArgumentMessage([] {
+                    ballBallModel({{"friction_law", "coulomb"}});
+                  }),
                   "\"alciatore\" or \"constant\"");
 }
 

@@ -1,10 +1,10 @@
 // Tests of ball-ball model "mathavan2014": the physics model's result with the shot's ball and
 // cloth, its rigid friction mu_b, and the echo reading back.
-#include "engine/models/model_registry.h"
 #include "engine/models/ball_ball_mathavan2014_model.h"
 
 #include <gtest/gtest.h>
 
+#include "engine/models/model_registry.h"
 #include "tests/engine/error_test_support.h"
 #include "tests/engine/models/model_test_support.h"
 

@@ -1,10 +1,10 @@
 // Tests of cushion model "exact": it gives exactly the event-located solver's result with the
 // shot's ball and cloth, echoes its parameters, and refuses a tolerance out of range.
-#include "engine/models/model_registry.h"
 #include "engine/models/cushion_exact_model.h"
 
 #include <gtest/gtest.h>
 
+#include "engine/models/model_registry.h"
 #include "tests/engine/error_test_support.h"
 #include "tests/engine/models/model_test_support.h"
 
@@ -37,8 +37,10 @@ TEST(CushionExactModel, GivesTheSolversResultWithTheShotsBallAndCloth) {
 
 TEST(CushionExactModel, EchoesEveryParameterUnderItsSceneKey) {
   const auto model = cushionModel({{"friction", 0.12}, {"contact_height_m", 0.04}});
-  const nlohmann::json expected = {{"model", "exact"},        {"restitution", 0.98},
-                                   {"friction", 0.12},        {"contact_height_m", 0.04},
+  const nlohmann::json expected = {{"model", "exact"},
+                                   {"restitution", 0.98},
+                                   {"friction", 0.12},
+                                   {"contact_height_m", 0.04},
                                    {"tolerance", 3e-11}};
   EXPECT_EQ(model->parametersJson(), expected);
   EXPECT_EQ(cushionModel(model->parametersJson())->parametersJson(), expected) << "reads back";

@@ -16,7 +16,8 @@ TEST(CushionMathavan2010, DefaultsTakeTheTablesNoseHeightAndKeysOverrideThem) {
   const Mathavan2010Cushion plain = readMathavan2010(defaults, nullptr);
   EXPECT_EQ(plain.contact_height_m, 0.04);
   EXPECT_EQ(plain.restitution, physics::CushionParams{}.restitution);
-  const nlohmann::json group = {{"restitution", 0.9}, {"friction", 0.1}, {"contact_height_m", 0.037}};
+  const nlohmann::json group = {
+      {"restitution", 0.9}, {"friction", 0.1}, {"contact_height_m", 0.037}};
   const JsonReader reader(group, "t.json");
   const Mathavan2010Cushion read = readMathavan2010(defaults, &reader);
   EXPECT_EQ(read.restitution, 0.9);

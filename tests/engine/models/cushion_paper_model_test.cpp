@@ -1,7 +1,6 @@
 // Tests of cushion model "paper": it gives exactly the paper scheme's result, agrees with the exact
 // solver through the event loop to its first-order error, fails a shot whose impact gains energy,
 // and refuses a step count below 1.
-#include "engine/models/model_registry.h"
 #include "engine/models/cushion_paper_model.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/models/model_registry.h"
 #include "physics/cushion_paper_solver.h"
 #include "tests/engine/error_test_support.h"
 #include "tests/engine/models/model_test_support.h"

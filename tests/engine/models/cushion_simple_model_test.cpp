@@ -1,10 +1,10 @@
 // Tests of cushion model "simple": through the event loop a head-on rebound is e times the
 // incoming speed, it is not worth solving ahead, and a restitution out of (0, 1] is refused.
-#include "engine/models/model_registry.h"
 #include "engine/models/cushion_simple_model.h"
 
 #include <gtest/gtest.h>
 
+#include "engine/models/model_registry.h"
 #include "tests/engine/error_test_support.h"
 #include "tests/engine/models/model_test_support.h"
 

@@ -76,7 +76,9 @@ TEST(ModelRegistry, AToyCushionModelRegisteredInATestRunsAScene) {
   const SimulationParams p = simulationParamsFor(scene);
   EXPECT_EQ(physicsJson(p, cueStrikeParamsFor(scene))["cushion"]["mirror_factor"], 0.5);
   // Its key belongs to it alone.
-  EXPECT_MENTIONS(invalidArgumentMessage([] { cushionModel({{"mirror_factor", 0.5}}); }),
+  EXPECT_MENTIONS(invalidArgumentMessage([] {
+                    cushionModel({{"mirror_factor", 0.5}});
+                  }),
                   "it applies only to model \"mirror\"");
   // Refusals from its checks carry the file and group like any model's.
   nlohmann::json bad = doc;
@@ -100,15 +102,20 @@ TEST(ModelRegistry, ANameTakenOrUnknownIsRefused) {
                   "cushion model \"exact\" is not allowed");
   EXPECT_MENTIONS(invalidArgumentMessage([] { cushionModels().make("rigid", ModelDefaults{}); }),
                   "cushion model \"rigid\" is not allowed: it must be \"exact\", \"paper\"");
-  EXPECT_MENTIONS(invalidArgumentMessage([] { cushionModel({{"model", "rigid"}}); }),
+  EXPECT_MENTIONS(invalidArgumentMessage([] {
+                    cushionModel({{"model", "rigid"}});
+                  }),
                   "test.json: physics.cushion.model = \"rigid\" is not allowed");
-  EXPECT_MENTIONS(invalidArgumentMessage([] { cushionModel({{"modle", "exact"}}); }),
+  EXPECT_MENTIONS(invalidArgumentMessage([] {
+                    cushionModel({{"modle", "exact"}});
+                  }),
                   "physics.cushion.modle = \"exact\" is not allowed: unknown key");
 }
 
 TEST(ModelRegistry, AKeyOfAnotherModelNamesTheModelsThatReadIt) {
-  const std::string message =
-      invalidArgumentMessage([] { cushionModel({{"model", "simple"}, {"restitution", 0.9}}); });
+  const std::string message = invalidArgumentMessage([] {
+    cushionModel({{"model", "simple"}, {"restitution", 0.9}});
+  });
   EXPECT_MENTIONS(message, "it applies only to model \"exact\" or \"paper\"");
   EXPECT_MENTIONS(message, "model \"simple\" takes simple_restitution");
   EXPECT_MENTIONS(message, "(the model here is \"simple\")");

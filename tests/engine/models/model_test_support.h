@@ -18,11 +18,11 @@ inline std::shared_ptr<const CushionContactModel> cushionModel(const nlohmann::j
 
 // The model a "physics.ball_ball" group gives, with the pool defaults.
 inline std::shared_ptr<const BallBallContactModel> ballBallModel(const nlohmann::json& group) {
-  return ballBallModels().read(JsonReader(group, "test.json", "physics.ball_ball"), ModelDefaults{});
+  return ballBallModels().read(JsonReader(group, "test.json", "physics.ball_ball"),
+                               ModelDefaults{});
 }
 
-inline physics::BallState rollingBallAt(double x, double y, double vx, double vy,
-                                        double radius_m) {
+inline physics::BallState rollingBallAt(double x, double y, double vx, double vy, double radius_m) {
   physics::BallState b;
   b.position = {x, y};
   b.velocity = {vx, vy, 0};

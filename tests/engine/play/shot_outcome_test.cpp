@@ -42,7 +42,7 @@ TEST(ShotOutcome, ReadsFirstHitCushionsBeforeItAndPocketsFromTheEvents) {
   ASSERT_TRUE(outcome.first_hit.has_value());
   EXPECT_EQ(*outcome.first_hit, "2");  // the other ball of the first contact, whichever order
   EXPECT_EQ(outcome.cushions_before_first_hit, 2);  // a cushion and a jaw; the later one not
-  EXPECT_EQ(outcome.cushion_contacts, 3);            // all of them, by any ball
+  EXPECT_EQ(outcome.cushion_contacts, 3);           // all of them, by any ball
   EXPECT_EQ(outcome.ball("cue")->cushion_contacts, 3);
   EXPECT_EQ(outcome.ball("2")->cushion_contacts, 0);
   ASSERT_EQ(outcome.pocketed.size(), 2u);

@@ -129,8 +129,8 @@ TEST(SuiteParsing, CaseLevelErrorsNameTheCase) {
   EXPECT_MENTIONS(message, "straight");
 
   // A name starts report lines and names PNG files: no line breaks, at most 200 characters.
-  for (const std::string& name : {std::string("a\nPASS fake"), std::string("tab\there"),
-                                  std::string(201, 'n')}) {
+  for (const std::string& name :
+       {std::string("a\nPASS fake"), std::string("tab\there"), std::string(201, 'n')}) {
     document = oneCase(R"({"no_foul": true})");
     document["cases"][0]["name"] = name;
     EXPECT_MENTIONS(suiteError(document), "cases[0].name");

@@ -18,9 +18,7 @@ constexpr int kSamples = 2000;
 
 struct Draw {
   std::mt19937_64 random{20261129};
-  double uniform(double lo, double hi) {
-    return lo + (hi - lo) * ((random() >> 11) * 0x1.0p-53);
-  }
+  double uniform(double lo, double hi) { return lo + (hi - lo) * ((random() >> 11) * 0x1.0p-53); }
   physics::PositionQuadratic path() {
     physics::PositionQuadratic p;
     p.constant_m = Vector2d(uniform(-1, 1), uniform(-0.5, 0.5));
@@ -65,8 +63,8 @@ TEST(BroadPhase, TheBoundsNeverClaimAClosingGapStaysOpen) {
       closes = (path.at(horizon * s / kSamples) - centre).norm() < distance;
     const bool farther = staysFarther(path.constant_m - centre, path.linear_mps,
                                       path.quadratic_mps2, distance, horizon);
-    const physics::PolynomialCoefficients gap = squaredGap(
-        path, centre, Vector2d::Zero(), Vector2d::Zero(), distance);
+    const physics::PolynomialCoefficients gap =
+        squaredGap(path, centre, Vector2d::Zero(), Vector2d::Zero(), distance);
     const bool apart = staysApart(gap, horizon);
     if (closes) {
       ++closing;

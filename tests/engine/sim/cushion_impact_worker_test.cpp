@@ -4,8 +4,8 @@
 
 #include <chrono>
 #include <filesystem>
-#include <thread>
 #include <string>
+#include <thread>
 
 #include "engine/io/scene.h"
 #include "engine/io/table.h"

@@ -15,8 +15,8 @@
 #include <thread>
 #include <vector>
 
-#include "engine/models/model_registry.h"
 #include "engine/io/scene.h"
+#include "engine/models/model_registry.h"
 #include "engine/sim/shot_simulator.h"
 
 namespace baize::engine {
@@ -86,8 +86,7 @@ bool repeatUntilServed(CushionImpactWorker& worker, const std::function<void()>&
     const long served_before = worker.shotsServed();
     attempt();
     if (worker.shotsServed() > served_before) return true;
-    if (!twoCores() || std::chrono::steady_clock::now() - start >= kPatience)
-      return false;
+    if (!twoCores() || std::chrono::steady_clock::now() - start >= kPatience) return false;
   }
 }
 
@@ -232,8 +231,8 @@ TEST(CushionSolveAhead, AFailedShotReleasesTheWorker) {
   CushionImpactWorker worker;
   // Until the failing shot held the worker (it may find the worker busy, asleep or on its own
   // core while other programs use the machine).
-  const bool failing_shot_held_it =
-      repeatUntilServed(worker, [&] { EXPECT_THROW(runScene(failing, false, &worker), std::runtime_error); });
+  const bool failing_shot_held_it = repeatUntilServed(
+      worker, [&] { EXPECT_THROW(runScene(failing, false, &worker), std::runtime_error); });
   for (int run = 0; run < 10; ++run)
     EXPECT_EQ(resultBits(runScene(scene, false, &worker).result), alone);
   if (twoCores()) {
@@ -279,8 +278,7 @@ TEST_F(HandOver, TheWorkersAnswerIsTakenForTheSameInput) {
   // Until the worker's answer was taken (on a busy machine it may not have solved it in time).
   bool taken_ahead = false;
   const auto start = std::chrono::steady_clock::now();
-  while (!taken_ahead && twoCores() &&
-         std::chrono::steady_clock::now() - start < kPatience) {
+  while (!taken_ahead && twoCores() && std::chrono::steady_clock::now() - start < kPatience) {
     const long taken = worker_.impactsTakenAhead();
     const auto [answer, held] = handOver(incoming(1), incoming(1));
     EXPECT_TRUE(sameBits(answer, params_.cushion->resolve(params_, incoming(1))));

@@ -80,7 +80,8 @@ TEST(ShotSimulation, SteppingGivesTheRunToRestBitForBit) {
     const SimulationResult rest = stepped.runToRest();
     ASSERT_EQ(rest.final_balls.size(), whole.final_balls.size());
     for (std::size_t i = 0; i < rest.final_balls.size(); ++i) {
-      EXPECT_TRUE(sameBits(rest.final_balls[i].state, whole.final_balls[i].state)) << name << " " << i;
+      EXPECT_TRUE(sameBits(rest.final_balls[i].state, whole.final_balls[i].state))
+          << name << " " << i;
       EXPECT_EQ(rest.final_balls[i].pocketed, whole.final_balls[i].pocketed);
     }
     EXPECT_EQ(rest.predictions, whole.predictions);

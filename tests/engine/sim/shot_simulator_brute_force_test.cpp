@@ -1,10 +1,10 @@
 // "No missed events": the event loop's exact-root contact times against an independent brute force.
 //
-// The brute force knows nothing of polynomials: it moves every ball on its own with physics::advance
-// (the closed form of a lone ball, exact between contacts) and samples every pair of balls and every
-// ball and cushion, jaw rounding and pocket capture circle every kStep_s, refining between samples by bisection (a crossing) and golden-
-// section search (a dip between samples, as in a grazing pass). Between two consecutive contact
-// events of the loop it must see
+// The brute force knows nothing of polynomials: it moves every ball on its own with
+// physics::advance (the closed form of a lone ball, exact between contacts) and samples every pair
+// of balls and every ball and cushion, jaw rounding and pocket capture circle every kStep_s,
+// refining between samples by bisection (a crossing) and golden- section search (a dip between
+// samples, as in a grazing pass). Between two consecutive contact events of the loop it must see
 //   - no penetration (a gap below -kPenetrationTolerance_m) before the next event's time - step,
 //   - a touch (a gap at or below +kTouchTolerance_m) no later than that time + step,
 // and the event's own pair or ball and cushion must be touching at the reported time. Each interval
@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/io/table.h"
 #include "engine/models/model_registry.h"
 #include "engine/sim/shot_simulator.h"
-#include "engine/io/table.h"
 
 namespace baize::engine {
 namespace {
@@ -43,8 +43,8 @@ constexpr double kTouchTolerance_m = 1e-9;
 // Each scene is checked over this much of the shot, s: enough for several contacts per scene
 // while keeping the whole test to a few seconds.
 constexpr double kCheckedSpan_s = 1.5;
-// No ball in these scenes exceeds this speed, m/s (cue balls up to 4 m/s, gaining at most half again
-// from spin): a gap can dip at most 2 of these times a step below its samples.
+// No ball in these scenes exceeds this speed, m/s (cue balls up to 4 m/s, gaining at most half
+// again from spin): a gap can dip at most 2 of these times a step below its samples.
 constexpr double kSpeedBound_mps = 10.0;
 // Golden-section iterations: shrink a 2-step bracket by 0.618^80, below 1e-20 s.
 constexpr int kGoldenIterations = 80;
@@ -97,7 +97,8 @@ struct Checker {
   // Every ball `dt_s` after `start`, each on its own.
   std::vector<BallState> at(const std::vector<BallState>& start, double dt_s) const {
     std::vector<BallState> out(start.size());
-    for (std::size_t i = 0; i < start.size(); ++i) out[i] = physics::advance(params.cloth, start[i], dt_s);
+    for (std::size_t i = 0; i < start.size(); ++i)
+      out[i] = physics::advance(params.cloth, start[i], dt_s);
     return out;
   }
 
@@ -135,7 +136,8 @@ struct Checker {
   }
 
   // The time of the least gap in [lo, hi] (a golden-section search; the gap is unimodal there).
-  double leastGapTime(const Contact& c, const std::vector<BallState>& start, double lo, double hi) const {
+  double leastGapTime(const Contact& c, const std::vector<BallState>& start, double lo,
+                      double hi) const {
     const double ratio = 0.5 * (std::sqrt(5.0) - 1);
     double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
     double ga = gapAt(c, start, a), gb = gapAt(c, start, b);
@@ -173,8 +175,9 @@ struct Checker {
     Scan found;
     auto record = [&](int c, double lo, double hi, double g_lo, double g_hi) {
       // The crossing or dip of contact c inside [lo, hi]: refine both thresholds.
-      const double thresholds[2] = {touching_at_start[c] ? -kPenetrationTolerance_m : kTouchTolerance_m,
-                                    -kPenetrationTolerance_m};
+      const double thresholds[2] = {
+          touching_at_start[c] ? -kPenetrationTolerance_m : kTouchTolerance_m,
+          -kPenetrationTolerance_m};
       double* results[2] = {&found.first_touch_s, &found.first_penetration_s};
       double least_time = -1, least = kInf;
       for (int k = 0; k < 2; ++k) {
@@ -223,7 +226,8 @@ struct Checker {
   };
 
   // Checks a whole shot event by event; returns the contact events checked.
-  Checked checkShot(const std::vector<BallState>& input, double step_s, const std::string& scene) const {
+  Checked checkShot(const std::vector<BallState>& input, double step_s,
+                    const std::string& scene) const {
     const SimulationResult result = simulate(params, table, input);
     const int n = static_cast<int>(input.size());
     std::vector<bool> pocketed(n, false);
@@ -234,7 +238,8 @@ struct Checker {
     Checked checked;
     auto statesAt = [&](double t) {
       std::vector<BallState> out(n);
-      for (int i = 0; i < n; ++i) out[i] = physics::advance(params.cloth, known[i], t - known_time[i]);
+      for (int i = 0; i < n; ++i)
+        out[i] = physics::advance(params.cloth, known[i], t - known_time[i]);
       return out;
     };
     for (const Event& e : result.events) {
@@ -244,22 +249,25 @@ struct Checker {
         const double next = e.time_s - start_time;
         const Scan s = scan(start, pocketed, next + step_s, step_s);
         EXPECT_GE(s.first_penetration_s, next - step_s)
-            << scene << ": the brute force sees an overlap at t = " << start_time + s.first_penetration_s
-            << " s, before the loop's next contact (" << eventKindName(e.kind) << " at " << e.time_s << " s)";
+            << scene
+            << ": the brute force sees an overlap at t = " << start_time + s.first_penetration_s
+            << " s, before the loop's next contact (" << eventKindName(e.kind) << " at " << e.time_s
+            << " s)";
         Contact own{e.ball};
         if (e.kind == EventKind::BallBall) own.other = e.other;
         if (e.kind == EventKind::Cushion) own.cushion = e.index;
         if (e.kind == EventKind::Jaw) own.jaw = e.index;
         if (e.kind == EventKind::Pocket) own.pocket = e.index;
-        // A contact touching already at the start (a tangent one, or one closing by a hair) need not
-        // penetrate to be real; it is checked to be touching at the event below.
+        // A contact touching already at the start (a tangent one, or one closing by a hair) need
+        // not penetrate to be real; it is checked to be touching at the event below.
         const bool own_touching_at_start = std::abs(gap(own, start)) <= kTouchTolerance_m;
         EXPECT_TRUE(s.first_touch_s <= next + step_s || own_touching_at_start)
-            << scene << ": the brute force sees no contact near the loop's " << eventKindName(e.kind)
-            << " at " << e.time_s << " s";
+            << scene << ": the brute force sees no contact near the loop's "
+            << eventKindName(e.kind) << " at " << e.time_s << " s";
         const double own_gap = gap(own, statesAt(e.time_s));
         EXPECT_LE(std::abs(own_gap), kTouchTolerance_m)
-            << scene << ": the loop's " << eventKindName(e.kind) << " at " << e.time_s << " s has gap " << own_gap;
+            << scene << ": the loop's " << eventKindName(e.kind) << " at " << e.time_s
+            << " s has gap " << own_gap;
         ++checked.total;
         checked.jaws += e.kind == EventKind::Jaw;
         checked.pockets += e.kind == EventKind::Pocket;
@@ -277,7 +285,8 @@ struct Checker {
     if (last > start_time) {
       const Scan s = scan(start, pocketed, last - start_time, step_s);
       EXPECT_EQ(s.first_penetration_s, kInf)
-          << scene << ": the brute force sees an overlap at t = " << start_time + s.first_penetration_s
+          << scene
+          << ": the brute force sees an overlap at t = " << start_time + s.first_penetration_s
           << " s that the loop never reported";
     }
     return checked;
@@ -299,8 +308,10 @@ class SceneMaker {
       b.position = {uniform(-kTableLength_m / 2 + R + margin_m, kTableLength_m / 2 - R - margin_m),
                     uniform(-kTableWidth_m / 2 + R + margin_m, kTableWidth_m / 2 - R - margin_m)};
       bool clear = true;
-      for (const BallState& o : *balls) clear = clear && (o.position - b.position).norm() > 2 * R + margin_m;
-      for (const Circle& c : pockets) clear = clear && (c.centre_m - b.position).norm() > c.radius_m + margin_m;
+      for (const BallState& o : *balls)
+        clear = clear && (o.position - b.position).norm() > 2 * R + margin_m;
+      for (const Circle& c : pockets)
+        clear = clear && (c.centre_m - b.position).norm() > c.radius_m + margin_m;
       if (clear) {
         balls->push_back(b);
         return true;
@@ -338,8 +349,9 @@ TEST(ShotSimulatorBruteForce, RandomScenesMissNoContact) {
 }
 
 // The shipped 9 ft table, with pockets: cue balls sent at a pocket's mouth, off its centre by up to
-// 1.5 times its half-width either way (into the opening, onto the jaw roundings and the facings), at up to 4 m/s with random spin, among 1-3 resting balls; jaw roundings,
-// facings and capture circles are checked like cushions and balls.
+// 1.5 times its half-width either way (into the opening, onto the jaw roundings and the facings),
+// at up to 4 m/s with random spin, among 1-3 resting balls; jaw roundings, facings and capture
+// circles are checked like cushions and balls.
 TEST(ShotSimulatorBruteForce, ShotsAtThePocketsMissNoJawOrPocket) {
   const Table pool = builtinTable("pool-9ft");
   const Checker checker(geometryOf(pool));
@@ -349,16 +361,19 @@ TEST(ShotSimulatorBruteForce, ShotsAtThePocketsMissNoJawOrPocket) {
   for (int scene = 0; scene < 150; ++scene) {
     std::vector<BallState> balls;
     const int n = 2 + scene % 3;
-    for (int i = 0; i < n; ++i) ASSERT_TRUE(maker.placeClear(&balls, R, 1e-3, checker.table.pockets));
+    for (int i = 0; i < n; ++i)
+      ASSERT_TRUE(maker.placeClear(&balls, R, 1e-3, checker.table.pockets));
     const Pocket& pocket = pool.pockets[maker.index(static_cast<int>(pool.pockets.size()))];
     const Eigen::Vector2d across(-pocket.axis.y(), pocket.axis.x());
     const double half_mouth = 0.5 * (pocket.jaw_tips_m[1] - pocket.jaw_tips_m[0]).norm();
-    const Eigen::Vector2d target = pocket.mouth_centre_m + maker.uniform(-1.5, 1.5) * half_mouth * across;
+    const Eigen::Vector2d target =
+        pocket.mouth_centre_m + maker.uniform(-1.5, 1.5) * half_mouth * across;
     maker.strike(&balls[0], R, 4.0, 2.0);
     const Eigen::Vector2d aim = (target - balls[0].position).normalized();
     const double speed = maker.uniform(0.5, 4.0);
     balls[0].velocity = {speed * aim.x(), speed * aim.y(), 0};
-    const Checker::Checked c = checker.checkShot(balls, kStep_s, "pocket scene " + std::to_string(scene));
+    const Checker::Checked c =
+        checker.checkShot(balls, kStep_s, "pocket scene " + std::to_string(scene));
     checked.total += c.total, checked.jaws += c.jaws, checked.pockets += c.pockets;
   }
   // The seeded set checks 253 contacts, 19 at a jaw rounding and 27 pockets.
@@ -385,9 +400,11 @@ TEST(ShotSimulatorBruteForce, GrazingPassesAreDecidedByTheGap) {
     // Follow (rolling or more) about the axis across the path, and spin about z: the path stays
     // straight and the ball reaches the other one.
     const double across = maker.uniform(1, 2) * speed / R;
-    balls[0].angular_velocity = {across * side.x(), across * side.y(), maker.uniform(-2, 2) * speed / R};
+    balls[0].angular_velocity = {across * side.x(), across * side.y(),
+                                 maker.uniform(-2, 2) * speed / R};
     balls[1].position = 0.2 * dir + (2 * R + offset) * side;
-    const std::string name = "grazing scene " + std::to_string(scene) + " (offset " + std::to_string(offset) + " m)";
+    const std::string name =
+        "grazing scene " + std::to_string(scene) + " (offset " + std::to_string(offset) + " m)";
     checker.checkShot(balls, kStep_s, name);
     const SimulationResult r = simulate(checker.params, checker.table, balls);
     bool hit = false;  // on the first pass, before any cushion
@@ -419,8 +436,8 @@ TEST(ShotSimulatorBruteForce, BallsRunningAlongACushionAreDecidedByTheGap) {
     balls[0].velocity = {speed, speed * slope, 0};
     balls[0].angular_velocity = {-speed * slope / R, speed / R, maker.uniform(-30, 30)};  // rolling
     checker.checkShot(balls, kStep_s,
-                      "cushion-run scene " + std::to_string(scene) + " (offset " + std::to_string(offset) +
-                          " m, slope " + std::to_string(slope) + ")");
+                      "cushion-run scene " + std::to_string(scene) + " (offset " +
+                          std::to_string(offset) + " m, slope " + std::to_string(slope) + ")");
   }
 }
 
@@ -440,24 +457,31 @@ TEST(ShotSimulatorBruteForce, FrozenBallsPartingOrPushedMissNoContact) {
     const int kind = scene % 5;
     const double speed = maker.uniform(1e-3, 3);
     Eigen::Vector2d v;
-    if (kind == 0) v = -dir;                                              // away
-    else if (kind == 1) v = dir;                                          // toward
-    else if (kind == 2) v = side;                                         // along the tangent
-    else v = (maker.uniform(-1, 1) * dir + maker.uniform(-1, 1) * side);  // anything
+    if (kind == 0)
+      v = -dir;  // away
+    else if (kind == 1)
+      v = dir;  // toward
+    else if (kind == 2)
+      v = side;  // along the tangent
+    else
+      v = (maker.uniform(-1, 1) * dir + maker.uniform(-1, 1) * side);  // anything
     if (v.norm() > 0) v.normalize();
     if (kind < 4) {
       balls[0].velocity = {speed * v.x(), speed * v.y(), 0};
       const double w = 2 * speed / R;
-      balls[0].angular_velocity = {maker.uniform(-w, w), maker.uniform(-w, w), maker.uniform(-w, w)};
+      balls[0].angular_velocity = {maker.uniform(-w, w), maker.uniform(-w, w),
+                                   maker.uniform(-w, w)};
     } else {
       // A cue ball aimed at the pair (or the pair plus a third ball in a triangle).
       if (scene % 2 == 0) balls.push_back(BallState{});
-      if (balls.size() == 3) balls[2].position = balls[0].position + 2 * R * (0.5 * dir + std::sqrt(0.75) * side);
+      if (balls.size() == 3)
+        balls[2].position = balls[0].position + 2 * R * (0.5 * dir + std::sqrt(0.75) * side);
       BallState cue;
       cue.position = balls[0].position - 0.4 * dir + maker.uniform(-R, R) * side;
       const Eigen::Vector2d aim = (balls[0].position - cue.position).normalized();
       cue.velocity = {speed * aim.x(), speed * aim.y(), 0};
-      cue.angular_velocity = {maker.uniform(-50, 50), maker.uniform(-50, 50), maker.uniform(-50, 50)};
+      cue.angular_velocity = {maker.uniform(-50, 50), maker.uniform(-50, 50),
+                              maker.uniform(-50, 50)};
       balls.push_back(cue);
     }
     checked += checker.checkShot(balls, kStep_s, "frozen scene " + std::to_string(scene)).total;

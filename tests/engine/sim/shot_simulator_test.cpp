@@ -9,11 +9,11 @@
 #include <random>
 #include <string>
 
-#include "engine/models/model_registry.h"
 #include "engine/io/ball_set.h"
-#include "engine/sim/contact_geometry.h"
 #include "engine/io/rack.h"
 #include "engine/io/table.h"
+#include "engine/models/model_registry.h"
+#include "engine/sim/contact_geometry.h"
 
 namespace baize::engine {
 namespace {
@@ -133,7 +133,7 @@ TEST(ShotSimulator, ThirtyDegreeRuleHoldsThroughTheWholeLoop) {
                  "test"),
       ModelDefaults{});
   const double R = p.ball.radius_m, v0 = 1.5;
-  BallState cue = ballAt(-1, R, v0, 0);  // offset by R from the object ball's line: half-ball
+  BallState cue = ballAt(-1, R, v0, 0);   // offset by R from the object ball's line: half-ball
   cue.angular_velocity = {0, v0 / R, 0};  // natural roll along +x
   const SimulationResult r = simulate(p, rectangularTable(20, 10), {cue, ballAt(0, 0)});
   const auto hit = std::find_if(r.events.begin(), r.events.end(),
@@ -148,7 +148,8 @@ TEST(ShotSimulator, ThirtyDegreeRuleHoldsThroughTheWholeLoop) {
   ASSERT_NE(rolls, r.events.end());
   const Eigen::Vector3d v = rolls->after[0].velocity;
   const double phi = M_PI / 6;
-  const double expected = std::atan(std::sin(phi) * std::cos(phi) / (std::pow(std::sin(phi), 2) + 0.4));
+  const double expected =
+      std::atan(std::sin(phi) * std::cos(phi) / (std::pow(std::sin(phi), 2) + 0.4));
   EXPECT_NEAR(std::atan2(v.y(), v.x()), expected, 1e-9);
   EXPECT_NEAR(expected * 180 / M_PI, 33.67, 0.01);
 }
@@ -319,8 +320,8 @@ TEST(ShotSimulator, TrajectoriesSampledAtEventsGiveTheEventStates) {
 }
 
 // A jaw is a cushion whose normal points from its centre to the ball: a ball rolling straight at a
-// jaw's centre meets it head-on and gets exactly the Mathavan 2010 model's head-on result; a ball aimed at
-// the part of the circle outside the jaw's angular range passes through.
+// jaw's centre meets it head-on and gets exactly the Mathavan 2010 model's head-on result; a ball
+// aimed at the part of the circle outside the jaw's angular range passes through.
 TEST(ShotSimulator, AJawActsAsACushionAlongItsContactNormalWithinItsRange) {
   const SimulationParams p = poolSimulationParams();
   const double R = p.ball.radius_m, rho = 0.01;
@@ -433,7 +434,8 @@ TEST(ShotSimulator, ABallComingToRestARoundingEarlyIsPredictedAgain) {
 TEST(ShotSimulator, ABallPushedByASpinningBallMovesAsTheLastingContactSays) {
   SimulationParams p = poolSimulationParams();
   p.ball_ball = ballBallModels().read(
-      JsonReader({{"friction_law", "constant"}, {"constant_friction", 0}}, "test"), ModelDefaults{});
+      JsonReader({{"friction_law", "constant"}, {"constant_friction", 0}}, "test"),
+      ModelDefaults{});
   p.cloth.rolling_friction = 1e-4;  // small, so that B's sliding spells barely matter (see below)
   p.record_trajectories = true;
   const double R = p.ball.radius_m, g = p.cloth.gravity_mps2, mu = p.cloth.sliding_friction;
@@ -551,8 +553,8 @@ TEST(ShotSimulator, ABallLeavingTheTableFailsTheShotNamingTheBall) {
   const Table table = builtinTable("pool-9ft");
   const double speed_mps = 3, heading_rad = M_PI / 4;
   // From [0.9, 0.3] at 45 degrees into the +x +y corner pocket (number 3).
-  const BallState cue = ballAt(0.9, 0.3, speed_mps * std::cos(heading_rad),
-                               speed_mps * std::sin(heading_rad));
+  const BallState cue =
+      ballAt(0.9, 0.3, speed_mps * std::cos(heading_rad), speed_mps * std::sin(heading_rad));
   const BallState resting = ballAt(0, 0);
   TableGeometry geometry = geometryOf(table);
   const SimulationResult caught = simulate(p, geometry, {resting, cue});

@@ -1,8 +1,8 @@
 #include "tools/baize_view/playback.h"
 
-#include <limits>
-
 #include <gtest/gtest.h>
+
+#include <limits>
 
 namespace baize::tools {
 namespace {
