@@ -495,7 +495,7 @@ CuePlan ShotMaker::drawStrike(StressShotKind kind, double aim_deg,
 // engine::loadScene builds it from that file, struck: balls in the JSON object's key order,
 // angles converted from degrees the same way.
 void writeCueShot(const StressTable& t, CuePlan plan, const std::vector<Eigen::Vector2d>& places,
-                  const physics::CueStrikeParams& cue_params, StressShot* shot) {
+                  StressShot* shot) {
   std::vector<std::string> ids;
   for (const engine::BallSpec& b : t.ball_set.balls) ids.push_back(b.id);
   // "cue" first in the ball set; the others take the set's ids in order.
@@ -524,16 +524,7 @@ void writeCueShot(const StressTable& t, CuePlan plan, const std::vector<Eigen::V
   scene.shot = plan.shot;
   scene.shot.heading_rad = plan.heading_deg * M_PI / 180;
   scene.shot.elevation_rad = plan.elevation_deg * M_PI / 180;
-  const physics::CueStrikeResult strike = physics::strikeCueBall(cue_params, scene.shot);
-  for (const engine::PlacedBall& b : scene.balls) {
-    BallState state;
-    state.position = b.position_m;
-    if (b.id == scene.cue_ball) {
-      state.velocity = strike.ball.v;
-      state.angular_velocity = strike.ball.w;
-    }
-    shot->balls.push_back(state);
-  }
+  shot->balls = engine::sceneStart(scene).balls;
   shot->scene = scene;
   shot->scene_json = doc;
 }
@@ -571,7 +562,7 @@ StressShot ShotMaker::cueShot(StressShotKind kind, int max_balls) {
   bare.ball_set = t.ball_set;
   const physics::CueStrikeParams cue_params = engine::cueStrikeParamsFor(bare);
   const CuePlan plan = drawStrike(kind, layout.aim_deg, cue_params);
-  writeCueShot(t, plan, layout.places, cue_params, &shot);
+  writeCueShot(t, plan, layout.places, &shot);
   return shot;
 }
 

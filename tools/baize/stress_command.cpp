@@ -131,17 +131,7 @@ Replay loadReplay(const std::string& path) {
     const engine::Scene scene = engine::loadScene(path);
     replay.table = stressTableOfScene(scene);
     replay.params = replay.table.params;
-    const physics::CueStrikeResult strike =
-        physics::strikeCueBall(engine::cueStrikeParamsFor(scene), scene.shot);
-    for (const engine::PlacedBall& b : scene.balls) {
-      BallState state;
-      state.position = b.position_m;
-      if (b.id == scene.cue_ball) {
-        state.velocity = strike.ball.v;
-        state.angular_velocity = strike.ball.w;
-      }
-      replay.balls.push_back(state);
-    }
+    replay.balls = engine::sceneStart(scene).balls;
     return replay;
   }
   const engine::JsonReader state(document, path);
