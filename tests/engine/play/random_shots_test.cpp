@@ -1,0 +1,95 @@
+#include "engine/play/random_shots.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/io/scene.h"
+#include "engine/io/table.h"
+
+namespace baize::engine {
+namespace {
+
+// Bit-for-bit results, pinned over the shipped scenes and the benches' 3000 random single shots:
+// every event (time, kind, balls, contact, the states before and after), every final state and
+// each shot's end. A change of code that keeps the physics keeps these two numbers; a change of the
+// physics changes them, and the new values (printed on failure) are pinned again with the reason.
+constexpr std::uint64_t kPinnedShippedScenesHash = 11958272033393500086ULL;
+constexpr std::uint64_t kPinnedWithRandomShotsHash = 18213784150793705737ULL;
+constexpr int kRandomShots = 3000;
+
+// FNV-1a over the bytes of a run's results.
+class ResultHash {
+ public:
+  void add(const SceneRun& run) {
+    for (const Event& e : run.result.events) {
+      addDouble(e.time_s);
+      addLong(static_cast<int>(e.kind));
+      addLong(e.ball);
+      addLong(e.other);
+      addLong(e.index);
+      for (const physics::BallState& s : e.before) addState(s);
+      for (const physics::BallState& s : e.after) addState(s);
+    }
+    for (const BallRecord& b : run.result.final_balls) {
+      addState(b.state);
+      addLong(b.pocketed);
+      addLong(b.pocket);
+    }
+    addDouble(run.result.end_time_s);
+  }
+  std::uint64_t value() const { return hash_; }
+
+ private:
+  void addBytes(const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < size; ++k) {
+      hash_ ^= bytes[k];
+      hash_ *= 1099511628211ULL;
+    }
+  }
+  void addDouble(double d) { addBytes(&d, sizeof d); }
+  void addLong(long v) { addBytes(&v, sizeof v); }
+  void addState(const physics::BallState& s) {
+    for (int k = 0; k < 2; ++k) addDouble(s.position[k]);
+    for (int k = 0; k < 3; ++k) {
+      addDouble(s.velocity[k]);
+      addDouble(s.angular_velocity[k]);
+    }
+  }
+  std::uint64_t hash_ = 1469598103934665603ULL;
+};
+
+TEST(RandomShots, ResultsArePinnedBitForBit) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& f : std::filesystem::directory_iterator(assetsDirectory() + "/scenes"))
+    files.push_back(f.path());
+  std::sort(files.begin(), files.end());
+  ResultHash hash;
+  for (const auto& f : files) hash.add(runScene(loadScene(f.string())));
+  EXPECT_EQ(hash.value(), kPinnedShippedScenesHash) << "new hash: " << hash.value() << "ULL";
+  const std::vector<Scene> shots = randomSingleShots(kRandomShots);
+  ASSERT_EQ(shots.size(), static_cast<std::size_t>(kRandomShots));
+  for (const Scene& shot : shots) hash.add(runScene(shot));
+  EXPECT_EQ(hash.value(), kPinnedWithRandomShotsHash) << "new hash: " << hash.value() << "ULL";
+}
+
+// The first shots of a set are the same whatever its size (a bench of 20 and one of 3000 share
+// them), and every shot is a single cue ball and object ball on the 9 ft table.
+TEST(RandomShots, TheFirstShotsAreTheSameWhateverTheCount) {
+  const std::vector<Scene> few = randomSingleShots(20), many = randomSingleShots(200);
+  for (std::size_t k = 0; k < few.size(); ++k) {
+    ASSERT_EQ(few[k].balls.size(), 2u);
+    EXPECT_EQ(few[k].balls[0].position_m, many[k].balls[0].position_m) << "shot " << k;
+    EXPECT_EQ(few[k].balls[1].position_m, many[k].balls[1].position_m) << "shot " << k;
+    EXPECT_EQ(few[k].shot.speed_mps, many[k].shot.speed_mps) << "shot " << k;
+    EXPECT_EQ(few[k].table.name, "pool-9ft");
+  }
+}
+
+}  // namespace
+}  // namespace baize::engine
