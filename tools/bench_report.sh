@@ -59,7 +59,9 @@ GALLIUM_DRIVER=llvmpipe "$baize" bench render "${render_flags[@]}" > "$work/rend
 "$baize" chart bench-cushion "$work/cushion.csv" --png "$work/bench-cushion.png" >/dev/null
 
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-[[ -z "$(git status --porcelain 2>/dev/null)" ]] || commit="$commit (with uncommitted changes)"
+# The report's own outputs do not count as changes to what was measured.
+changed=$(git status --porcelain -- . ":!$out" ":!$images" ":!$readme" 2>/dev/null || true)
+[[ -z "$changed" ]] || commit="$commit (with uncommitted changes)"
 python3 - "$work" "$out.tmp" "$commit" "$quick" "$images" <<'PY'
 import csv, datetime, os, platform, sys
 work, out, commit, quick, images = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4] == "1", sys.argv[5]
