@@ -124,4 +124,10 @@ msg=$("$baize" batch "$work" 2>&1 >/dev/null); status=$?
 set -e
 [[ $status == 2 ]] || fail "batch DIRECTORY must exit 2, got $status"
 grep -qF "input $work is a directory" <<<"$msg" || fail "message: $msg"
+# An input with no line ends is refused at the line limit (exit 2), not read until memory runs out.
+set +e
+msg=$(timeout 60 "$baize" batch /dev/zero 2>&1 >/dev/null); status=$?
+set -e
+[[ $status == 2 ]] || fail "batch /dev/zero must exit 2, got $status"
+grep -qF "input /dev/zero: line 1 is longer than 16 MiB" <<<"$msg" || fail "message: $msg"
 echo "batch CLI: ok"

@@ -26,6 +26,28 @@ namespace {
 // Lines read before they are run and written: bounds the memory and lets results stream out of a
 // pipe, while giving every thread plenty of shots per chunk.
 constexpr std::size_t kChunkLines = 4096;
+// The longest input line read, bytes: a line holds one shot (a scene, with its table at most),
+// far below this; an input with no line ends (/dev/zero) is refused instead of read until memory
+// runs out.
+constexpr std::size_t kMaxLineBytes = std::size_t{16} << 20;
+
+// Reads one line (without its '\n') into *line: false at the end of the input with nothing read.
+// Throws UsageError naming the input and the line when it is longer than kMaxLineBytes.
+bool readLine(std::istream& in, const std::string& input_name, long number, std::string* line) {
+  line->clear();
+  std::streambuf* buffer = in.rdbuf();
+  for (;;) {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof()) return !line->empty();
+    if (c == '\n') return true;
+    if (line->size() == kMaxLineBytes) {
+      throw UsageError("input " + input_name + ": line " + std::to_string(number) +
+                       " is longer than " + std::to_string(kMaxLineBytes >> 20) +
+                       " MiB, the most a line may be (one shot per line)");
+    }
+    line->push_back(static_cast<char>(c));
+  }
+}
 // More threads than this is a typo, not a machine.
 constexpr int kMaxThreads = 1024;
 
@@ -131,7 +153,7 @@ int runBatch(const BatchFlags& flags) {
   bool more = true;
   while (more) {
     chunk.clear();
-    while (chunk.size() < kChunkLines && (more = static_cast<bool>(std::getline(in, text)))) {
+    while (chunk.size() < kChunkLines && (more = readLine(in, input_name, number + 1, &text))) {
       ++number;
       if (text.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank: no shot
       chunk.push_back({number, text});
