@@ -12,6 +12,9 @@ namespace baize::physics {
 // N is an integer in [1, kMaxPaperSteps]: 1e7 increments already take about a second per impact,
 // so more is a typing slip, not a wish for accuracy.
 inline constexpr int kMaxPaperSteps = 10000000;
+// The kinetic energy a paper-scheme impact may gain, relative: rounding only. More means its
+// increments are too coarse for the impact (the scheme is first order), and callers refuse it.
+inline constexpr double kPaperEnergyGrowthAllowed = 1e-12;
 
 struct PaperSolverOptions {
   int steps = 5000;           // N in the paper, in [1, kMaxPaperSteps]

@@ -9,9 +9,6 @@
 namespace baize::engine {
 namespace {
 
-// The energy a paper-scheme impact may gain, relative: rounding only. More means its increments
-// are too coarse for the impact (the scheme is first order).
-constexpr double kPaperEnergyGrowthAllowed = 1e-12;
 // N as the paper ran it.
 constexpr int kPaperSteps = 5000;
 
@@ -33,7 +30,7 @@ physics::BallVelocity PaperCushionModel::resolve(const SimulationParams& shot,
   // energy than the ball brought, and the shot would go on from a state no impact makes.
   const double before_J = physics::kineticEnergy(params, incoming);
   const double after_J = physics::kineticEnergy(params, after);
-  if (after_J > before_J * (1 + kPaperEnergyGrowthAllowed)) {
+  if (after_J > before_J * (1 + physics::kPaperEnergyGrowthAllowed)) {
     throw std::runtime_error(
         "physics.cushion.paper_steps = " + std::to_string(steps_) +
         ": the paper scheme made a cushion impact gain energy (" + physics::valueText(before_J) +

@@ -393,5 +393,10 @@ expect_error 2 "--from-shots excludes --set" bench cushion --set spinning --from
 expect_error 2 "--from-shots = 0 is not allowed" bench cushion --from-shots 0
 expect_error 2 "--mass excludes --from-shots" bench cushion --from-shots 1 --mass 0.2
 expect_error 2 "--impacts excludes --from-shots" bench cushion --from-shots 1 --impacts 3
+# The paper scheme with too few increments hands back more energy than the ball brought: refused
+# naming --steps and both energies, as scenes refuse it; enough increments pass.
+expect_error 2 "--steps 1: the paper scheme made this impact gain energy (0.09842 J in" \
+  cushion --solver paper --steps 1
+"$baize" cushion --solver paper --steps 50 >/dev/null || fail "--steps 50 was refused"
 
 echo "cushion CLI: all checks passed"

@@ -10,6 +10,9 @@
 #include <string>
 #include <utility>
 
+#include "physics/cushion_model.h"
+#include "physics/cushion_paper_solver.h"
+#include "physics/value_text.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_param_flags.h"
 #include "tools/baize/cushion_run.h"
@@ -167,6 +170,22 @@ std::string namingTheFlag(const std::string& physics_message) {
   return namingTheCushionFlag(physics_message);
 }
 
+// The paper's scheme is first order: with too few increments it can hand back more energy than the
+// ball brought, an outcome no impact has. Refused, as scenes refuse it (engine/models), naming the
+// flag that set the increments.
+void refuseEnergyGain(const CushionFlags& flags, const physics::BallVelocity& incoming,
+                      const physics::BallVelocity& after) {
+  if (flags.setting.kind != SolverKind::Paper) return;
+  const double before_J = physics::kineticEnergy(flags.params, incoming);
+  const double after_J = physics::kineticEnergy(flags.params, after);
+  if (!(after_J > before_J * (1 + physics::kPaperEnergyGrowthAllowed))) return;
+  throw UsageError("--steps " + std::to_string(flags.setting.paper_steps) +
+                   ": the paper scheme made this impact gain energy (" +
+                   physics::valueText(before_J) + " J in, " + physics::valueText(after_J) +
+                   " J out), its first-order error: more increments (--steps) or the exact solver "
+                   "(--solver exact) do not have it");
+}
+
 void solveAndPrint(CushionFlags& flags) {
   flags.setting.kind = flags.solver == "paper" ? SolverKind::Paper : SolverKind::Exact;
   validateFlags(flags);
@@ -181,6 +200,7 @@ void solveAndPrint(CushionFlags& flags) {
   const physics::BallVelocity incoming = incomingBallOf(flags.shot, flags.params.radius_m);
   const physics::CushionImpactResult result =
       solveCushionShot(flags.params, incoming, flags.setting);
+  refuseEnergyGain(flags, incoming, result.after);
   if (flags.json) {
     printJson(flags, incoming, result);
   } else {
