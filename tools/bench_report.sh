@@ -36,7 +36,7 @@ if [[ "$readme" != none ]]; then
 fi
 
 if [[ $quick -eq 1 ]]; then
-  shots_flags=(--repeat 1 --random-shots 30) accuracy_flags=(--shots 2 --repeats 1)
+  shots_flags=(--repeat 1 --random-shots 30) accuracy_flags=(--shots 2 --repeat 1)
   cushion_flags=(--impacts 30 --repeat 1) render_flags=(--repeat 1 --width 320 --height 160)
 else
   shots_flags=(--repeat 21 --random-shots 3000) accuracy_flags=()

@@ -10,7 +10,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-out=$("$baize" bench accuracy --shots 2 --repeats 1 --csv "$work/accuracy.csv") ||
+out=$("$baize" bench accuracy --shots 2 --repeat 1 --csv "$work/accuracy.csv") ||
   fail "bench accuracy exited $?"
 grep -q "^2 shots" <<<"$out" || fail "no shot count in: $out"
 grep -q "wrote $work/accuracy.csv" <<<"$out" || fail "no 'wrote' line in: $out"
@@ -46,7 +46,7 @@ PY
 
 # The event loop with looser cushion tolerances, on the first three shots (the third, heavy sidespin,
 # meets cushions): its error against the default grows with the tolerance and stays small.
-"$baize" bench accuracy --shots 3 --repeats 1 --csv "$work/tolerances.csv" >/dev/null ||
+"$baize" bench accuracy --shots 3 --repeat 1 --csv "$work/tolerances.csv" >/dev/null ||
   fail "bench accuracy --shots 3 exited $?"
 python3 - "$work/tolerances.csv" <<'PY'
 import csv, sys
@@ -60,9 +60,9 @@ PY
 
 # Bad flags: exit 2 with the flag named; nothing written.
 set +e
-msg=$("$baize" bench accuracy --repeats 0 --csv "$work/never.csv" 2>&1 >/dev/null); status=$?
+msg=$("$baize" bench accuracy --repeat 0 --csv "$work/never.csv" 2>&1 >/dev/null); status=$?
 set -e
-[[ $status -eq 2 ]] || fail "--repeats 0 exited $status, expected 2"
-grep -q -- "--repeats" <<<"$msg" || fail "message does not name --repeats: $msg"
+[[ $status -eq 2 ]] || fail "--repeat 0 exited $status, expected 2"
+grep -q -- "--repeat" <<<"$msg" || fail "message does not name --repeat: $msg"
 [[ -e "$work/never.csv" ]] && fail "CSV written for a bad flag"
 echo "bench accuracy CLI: ok"

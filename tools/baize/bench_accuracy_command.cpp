@@ -27,7 +27,7 @@ namespace {
 
 // Timed runs of one shot in one configuration stop early once they have used this much wall time,
 // s, so the slowest configurations (10 us steps) take one run per shot and the bench stays within
-// a few minutes; the fast ones get the full --repeats.
+// a few minutes; the fast ones get the full --repeat.
 constexpr double kRepeatBudget_s = 0.2;
 // How many of the cue ball's first contacts (collapsed where the same contact repeats) make up the
 // "event order" compared between engines: the first ball hit and what follows it.
@@ -260,7 +260,7 @@ std::vector<Configuration> configurations() {
 
 void runBenchAccuracy(const BenchAccuracyFlags& flags) {
   if (flags.repeats < 1 || flags.repeats > kMaxBenchCount) {
-    rejectFlag("--repeats", flags.repeats, kBenchCountAllowed);
+    rejectFlag("--repeat", flags.repeats, kBenchCountAllowed);
   }
   if (flags.shots < 0) rejectFlag("--shots", flags.shots, "it must be >= 0 (0: all)");
   std::optional<AtomicFile> csv;
@@ -376,7 +376,7 @@ void addBenchAccuracyCommand(CLI::App& parent) {
       ->check(notEmpty());
   command->add_option("--shots", flags->shots, "use only the first N shots of the set (0: all)")
       ->capture_default_str();
-  command->add_option("--repeats", flags->repeats, "timed runs per shot and configuration, at most")
+  command->add_option("--repeat", flags->repeats, "timed runs per shot and configuration, at most")
       ->capture_default_str();
   command->add_flag("--per-shot", flags->per_shot,
                     "also print each shot's time, error and cue-ball contacts per configuration");
