@@ -49,6 +49,10 @@ counts() { grep -E '^(stress|shots by kind|balls pocketed)' "$1" | sed 's/, larg
 "$baize" stress --shots 400 --seed 5 --threads 2 >"$work/t2.txt"
 [[ $(counts "$work/t1.txt") == "$(counts "$work/t2.txt")" ]] ||
   fail "1 and 2 threads differ: $(counts "$work/t1.txt") / $(counts "$work/t2.txt")"
+# The default, --threads 0, is the hardware concurrency: the same counts again.
+"$baize" stress --shots 400 --seed 5 >"$work/t0.txt"
+[[ $(counts "$work/t1.txt") == "$(counts "$work/t0.txt")" ]] ||
+  fail "the default threads differ: $(counts "$work/t1.txt") / $(counts "$work/t0.txt")"
 "$baize" stress --shots 100000000 --seed 5 --threads 2 --max-seconds 0.5 >"$work/budget.txt"
 grep -q '^stopped by --max-seconds 0.5 after shots 0 to [0-9]* of 100000000$' "$work/budget.txt" ||
   fail "no budget line: $(cat "$work/budget.txt")"
@@ -147,7 +151,7 @@ grep -q "small-capture.json: corner_pocket.capture_radius_m = 0.005 is not allow
   fail "uncovered pocket openings: $(cat "$work/err.txt")"
 
 # ---- 5. Bad flags and files are usage errors.
-for bad in "--shots 0" "--balls 1" "--balls 99" "--threads 0" "--max-seconds -1" "--max-events 0"; do
+for bad in "--shots 0" "--balls 1" "--balls 99" "--threads -1" "--threads 1025" "--max-seconds -1" "--max-events 0"; do
   status=0
   "$baize" stress $bad >/dev/null 2>"$work/err.txt" || status=$?
   [[ $status == 2 ]] || fail "baize stress $bad exited $status, want 2"

@@ -19,6 +19,7 @@
 #include "engine/play/shot_suite.h"
 #include "engine/sim/cushion_solve_ahead.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/thread_flag.h"
 
 namespace baize::tools {
 namespace {
@@ -48,8 +49,6 @@ bool readLine(std::istream& in, const std::string& input_name, long number, std:
     line->push_back(static_cast<char>(c));
   }
 }
-// More threads than this is a typo, not a machine.
-constexpr int kMaxThreads = 1024;
 
 struct BatchFlags {
   std::string input = "-";  // "-": standard input
@@ -119,13 +118,7 @@ std::string runLine(const InputLine& line, const std::string& input_name, const 
 }
 
 int runBatch(const BatchFlags& flags) {
-  if (flags.threads < 0 || flags.threads > kMaxThreads) {
-    rejectFlag("--threads", flags.threads,
-               "0 (the hardware concurrency) to " + std::to_string(kMaxThreads));
-  }
-  const int threads = flags.threads > 0
-                          ? flags.threads
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = threadsOfFlag(flags.threads);
   const bool from_stdin = flags.input == "-";
   std::ifstream file;
   if (!from_stdin) {
@@ -197,8 +190,7 @@ void addBatchCommand(CLI::App& parent) {
       "batch", "Run shots given as JSON lines; one JSON result line per shot, in input order");
   command->add_option("input", flags->input,
                       "file of JSON lines (default -: standard input); docs/positional.md");
-  command->add_option("--threads", flags->threads,
-                      "worker threads (default 0: the hardware concurrency)");
+  command->add_option("--threads", flags->threads, kThreadsHelp);
   command->callback([flags] {
     int status = 0;
     if (const int error = runReportingErrors("batch", [&] { status = runBatch(*flags); })) {

@@ -25,6 +25,7 @@
 #include "physics/cue_strike.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/thread_flag.h"
 
 namespace baize::tools {
 namespace {
@@ -33,9 +34,6 @@ using physics::BallState;
 
 // How many failing shots are printed in full (all of them are written with --failures).
 constexpr int kMaxReportedShots = 10;
-// The most threads --threads takes: far above any machine this runs on, low enough to refuse a
-// typo.
-constexpr int kMaxThreads = 256;
 // A progress line goes to stderr every this many shots (long runs take many minutes).
 constexpr long kProgressShots = 50000;
 // The "format" of a state file (a failing shot that no scene can express).
@@ -45,7 +43,7 @@ struct StressFlags {
   long shots = 100000;
   std::uint64_t seed = 1;
   int max_balls = 6;
-  int threads = 1;
+  int threads = 0;         // --threads: 0 for the hardware concurrency
   double max_seconds = 0;  // 0: no budget
   long max_events = engine::SimulationParams{}.max_events;
   std::string failures_dir;
@@ -255,16 +253,13 @@ void runReplay(const StressFlags& flags) {
   throw std::runtime_error("the replayed shot failed its checks");
 }
 
-void runStress(const StressFlags& flags) {
+void runStress(StressFlags flags) {  // a copy: --threads is resolved in it
   if (!flags.replay_path.empty()) return runReplay(flags);
   if (flags.shots < 1) rejectFlag("--shots", static_cast<double>(flags.shots), "it must be >= 1");
   if (flags.max_balls < 2 || flags.max_balls > 16) {
     rejectFlag("--balls", flags.max_balls, "it must lie in [2, 16] (the most balls per shot)");
   }
-  if (flags.threads < 1 || flags.threads > kMaxThreads) {
-    rejectFlag("--threads", flags.threads,
-               "it must lie in [1, " + std::to_string(kMaxThreads) + "]");
-  }
+  flags.threads = threadsOfFlag(flags.threads);
   if (!(flags.max_seconds >= 0) || !std::isfinite(flags.max_seconds)) {
     rejectFlag("--max-seconds", flags.max_seconds, "it must be >= 0 (0: no budget)");
   }
@@ -353,8 +348,7 @@ void addStressCommand(CLI::App& parent) {
       ->capture_default_str();
   command->add_option("--balls", flags->max_balls, "most balls in a shot (racks excepted)")
       ->capture_default_str();
-  command->add_option("--threads", flags->threads, "threads (the results do not depend on it)")
-      ->capture_default_str();
+  command->add_option("--threads", flags->threads, kThreadsHelp)->capture_default_str();
   command
       ->add_option("--max-seconds", flags->max_seconds,
                    "stop taking new shots after this many seconds (0: run all)")
