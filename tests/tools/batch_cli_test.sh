@@ -11,6 +11,12 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 python3 "$root/tools/batch_shots.py" 300 --seed 5 >"$work/shots.jsonl"
+# The docs' example as written: 2000 shots of the default seed, every one a shot batch runs (none
+# starts in a pocket), exit 0.
+python3 "$root/tools/batch_shots.py" 2000 | "$baize" batch --threads 2 >"$work/docs.jsonl" ||
+  fail "the docs' batch example (batch_shots.py 2000 | baize batch) exited $?"
+[[ $(grep -c '"error"' "$work/docs.jsonl") == 0 && $(wc -l <"$work/docs.jsonl") == 2000 ]] ||
+  fail "the docs' batch example: $(grep -m1 '"error"' "$work/docs.jsonl")"
 "$baize" batch "$work/shots.jsonl" --threads 1 >"$work/one.jsonl" || fail "--threads 1 exited $?"
 "$baize" batch "$work/shots.jsonl" --threads 2 >"$work/two.jsonl" || fail "--threads 2 exited $?"
 cmp -s "$work/one.jsonl" "$work/two.jsonl" || fail "1 and 2 threads give different output"
