@@ -160,12 +160,7 @@ void FixedStepper::sortContacts() {
 }
 
 void FixedStepper::resolve(const Contact& c) {
-  Event event;
-  event.time_s = now_;
-  event.kind = c.kind;
-  event.ball = c.ball;
-  event.other = c.other;
-  event.index = c.index;
+  Event event{now_, c.kind, c.ball, c.other, c.index, {}, {}};  // the balls are added below
   BallState& a = balls_[c.ball].state;
   const Eigen::Vector2d n = normal(c);
   event.before.push_back(a);

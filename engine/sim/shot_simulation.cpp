@@ -556,12 +556,7 @@ void ShotSimulation::resolveNext() {
   last_ = best;
   last_valid_ = true;
 
-  Event event;
-  event.time_s = now_;
-  event.kind = best.kind;
-  event.ball = best.ball;
-  event.other = best.other;
-  event.index = best.index;
+  Event event{now_, best.kind, best.ball, best.other, best.index, {}, {}};  // balls below
   event.before.push_back(balls_[best.ball].state);
   if (best.kind == EventKind::BallBall) event.before.push_back(balls_[best.other].state);
   switch (best.kind) {
