@@ -24,8 +24,14 @@ void onPngWarning(png_structp, png_const_charp) {}
 // zlib level: 1 (fastest). Pictures are mostly flat areas, which compress well even so.
 constexpr int kCompressionLevel = 1;
 
-// Writes the PNG to an open file; returns an empty string on success, else libpng's message.
-std::string encode(const Image& image, std::FILE* file) {
+void appendBytes(png_structp png, png_bytep data, png_size_t length) {
+  auto* bytes = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
+  bytes->insert(bytes->end(), data, data + length);
+}
+void flushNothing(png_structp) {}
+
+// Encodes the PNG into `bytes`; returns an empty string on success, else libpng's message.
+std::string encode(const Image& image, std::vector<std::uint8_t>* bytes) {
   std::string error;
   png_structp png =
       png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, onPngError, onPngWarning);
@@ -40,7 +46,7 @@ std::string encode(const Image& image, std::FILE* file) {
     png_destroy_write_struct(&png, &info);
     return error.empty() ? "libpng failed" : error;
   }
-  png_init_io(png, file);
+  png_set_write_fn(png, bytes, appendBytes, flushNothing);
   png_set_compression_level(png, kCompressionLevel);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width_px),
@@ -65,23 +71,10 @@ void writePng(const Image& image, const std::string& path) {
                                 std::to_string(image.rgba.size()) +
                                 " bytes cannot be written: it needs width * height * 4 bytes");
   }
-  const WholeFileTarget target = wholeFileTarget(path);
-  const std::string written = target.stream ? target.path : temporaryFor(target);
-  errno = 0;
-  std::FILE* file = std::fopen(written.c_str(), target.stream ? "ab" : "wb");
-  if (file == nullptr) {
-    throw std::runtime_error("cannot create '" + written + "': " + std::strerror(errno));
-  }
-  std::string error = encode(image, file);
-  if (std::fflush(file) != 0 && error.empty()) error = std::strerror(errno);
-  if (std::fclose(file) != 0 && error.empty()) error = std::strerror(errno);
-  if (error.empty() && !target.stream && std::rename(written.c_str(), target.path.c_str()) != 0) {
-    error = std::string("cannot rename it to '") + target.path + "': " + std::strerror(errno);
-  }
-  if (!error.empty()) {
-    if (!target.stream) std::remove(written.c_str());
-    throw std::runtime_error("cannot write '" + written + "': " + error);
-  }
+  std::vector<std::uint8_t> bytes;
+  const std::string error = encode(image, &bytes);
+  if (!error.empty()) throw std::runtime_error("cannot encode '" + path + "': " + error);
+  writeWholeFile(bytes, path);
 }
 
 Image readPng(const std::string& path) {

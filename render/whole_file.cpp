@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -43,6 +45,7 @@ std::optional<fs::path> followLinks(const fs::path& start) {
 }  // namespace
 
 WholeFileTarget wholeFileTarget(const std::string& path) {
+  if (path == kStandardOutputPath) return {"/dev/stdout", true};
   std::error_code error;
   // What the kernel finds there, links followed.
   const fs::file_status status = fs::status(path, error);
@@ -66,5 +69,26 @@ WholeFileTarget wholeFileTarget(const std::string& path) {
 }
 
 std::string temporaryFor(const WholeFileTarget& target) { return target.path + ".tmp"; }
+
+void writeWholeFile(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+  const WholeFileTarget target = wholeFileTarget(path);
+  const std::string written = target.stream ? target.path : temporaryFor(target);
+  errno = 0;
+  std::FILE* file = std::fopen(written.c_str(), target.stream ? "ab" : "wb");
+  if (file == nullptr) {
+    throw std::runtime_error("cannot create '" + written + "': " + std::strerror(errno));
+  }
+  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+  ok = std::fflush(file) == 0 && ok;
+  ok = std::fclose(file) == 0 && ok;
+  std::string error = ok ? "" : "cannot write '" + written + "': " + std::strerror(errno);
+  if (ok && !target.stream && std::rename(written.c_str(), target.path.c_str()) != 0) {
+    error = "cannot rename '" + written + "' to '" + target.path + "': " + std::strerror(errno);
+  }
+  if (!error.empty()) {
+    if (!target.stream) std::remove(written.c_str());
+    throw std::runtime_error(error);
+  }
+}
 
 }  // namespace baize::render

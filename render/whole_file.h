@@ -5,8 +5,10 @@
 // appended to (so `--json /dev/stdout >> log` keeps what the log held).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace baize::render {
 
@@ -15,12 +17,19 @@ struct WholeFileTarget {
   bool stream = false;  // a device, pipe or descriptor: written straight (appended), no temporary
 };
 
-// Where an output named `path` goes. Throws std::invalid_argument saying why (without the path)
+// The path that names standard output for every output ("--json -").
+constexpr const char* kStandardOutputPath = "-";
+
+// Where an output named `path` goes ("-": standard output, written straight). Throws std::invalid_argument saying why (without the path)
 // when it is a directory, a loop of symbolic links, or a named pipe no program reads (writing
 // would wait forever).
 WholeFileTarget wholeFileTarget(const std::string& path);
 
 // The temporary a whole-file write of `target` uses.
 std::string temporaryFor(const WholeFileTarget& target);
+
+// Writes `bytes` to `path` whole, as above; throws std::runtime_error naming the path when it
+// cannot, leaving no temporary behind.
+void writeWholeFile(const std::vector<std::uint8_t>& bytes, const std::string& path);
 
 }  // namespace baize::render

@@ -15,6 +15,7 @@ packages=(
   libbox2d-dev           # the Box2D 2.4.1 baseline of baize bench accuracy
   libosmesa6-dev         # off-screen OpenGL (llvmpipe) for baize render
   libpng-dev             # PNG pictures
+  libgif-dev             # animated GIFs of shots (render/gif_writer)
   libsdl2-dev            # the baize-view window
   libgl1-mesa-dri        # Mesa's software rasteriser behind EGL: baize-view with no display (tests)
   libfreetype-dev fonts-dejavu-core  # legend text and the charts' font (DejaVu Sans)

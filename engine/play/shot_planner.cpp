@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 namespace baize::engine {
@@ -70,11 +71,13 @@ double noiseFreeScore(const Scene& scene, const PlanGoal& goal, const ShotOutcom
 // Counts simulated shots against the budget.
 struct ShotCounter {
   long used = 0;
+  const std::function<void()>* on_shot = nullptr;  // PlanOptions::on_shot, when counted for it
 };
 
 std::optional<ShotOutcome> runShot(Scene& scene, const physics::CueShot& shot, ShotCounter* count,
                                    SceneRun* run_out = nullptr) {
   ++count->used;
+  if (count->on_shot != nullptr && *count->on_shot) (*count->on_shot)();
   scene.shot = shot;
   try {
     SceneRun run = runScene(scene);
@@ -285,7 +288,7 @@ class Planner {
   const PlanOptions& options_;
   double pocket_direction_rad_ = 0;
   double ghost_heading_rad_ = 0;
-  ShotCounter count_;
+  ShotCounter count_{0, &options_.on_shot};
   std::vector<Candidate> candidates_;
 };
 

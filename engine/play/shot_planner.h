@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,7 @@ struct PlanOptions {
   std::uint64_t seed = 1;
   int report = 3;  // shots reported
   PlanRanges ranges;
+  std::function<void()> on_shot;  // called as each shot of the search starts (progress), if set
 };
 
 // Search constants (docs/positional.md states the method).

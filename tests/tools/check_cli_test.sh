@@ -126,17 +126,25 @@ err=$("$baize" check "$root/assets/suites/positional-drills.json" --noise -3 2>&
 set -e
 [[ $status == 2 ]] || fail "--noise -3 must exit 2, got $status"
 grep -q -- "--noise" <<<"$err" || fail "message: $err"
-# --png must be a directory: a file there is refused, naming the path given.
+# --png-dir must be a folder: a file there is refused, naming the path given.
 touch "$work/a-file"
 set +e
-err=$("$baize" check "$root/assets/suites/positional-drills.json" --png "$work/a-file" 2>&1); status=$?
+err=$("$baize" check "$root/assets/suites/positional-drills.json" --png-dir "$work/a-file" 2>&1); status=$?
 set -e
-[[ $status == 2 ]] || fail "--png FILE must exit 2, got $status"
-grep -q -- "--png = $work/a-file is not allowed: it must be a directory" <<<"$err" || fail "message: $err"
+[[ $status == 2 ]] || fail "--png-dir FILE must exit 2, got $status"
+grep -q -- "--png-dir = $work/a-file is not allowed: it must be a folder" <<<"$err" || fail "message: $err"
+# The execution error's flags need --noise: refused alone, naming both.
+for flag in "--seed 3" "--sigma-aim-deg 0.2"; do
+  set +e
+  err=$("$baize" check "$root/assets/suites/positional-drills.json" $flag 2>&1); status=$?
+  set -e
+  [[ $status == 2 ]] || fail "$flag without --noise must exit 2, got $status"
+  grep -q -- "${flag% *} requires --noise" <<<"$err" || fail "$flag without --noise: $err"
+done
 # Each sigma flag is named as it was given, in its own units.
 for flag in --sigma-tip-mm --sigma-elevation-deg --sigma-aim-deg --sigma-speed-mps; do
   set +e
-  err=$("$baize" check "$root/assets/suites/positional-drills.json" $flag -1 2>&1); status=$?
+  err=$("$baize" check "$root/assets/suites/positional-drills.json" --noise 1 $flag -1 2>&1); status=$?
   set -e
   [[ $status == 2 ]] || fail "$flag -1 must exit 2, got $status"
   grep -q -- "$flag = -1 is not allowed: it must be >= 0" <<<"$err" || fail "message: $err"

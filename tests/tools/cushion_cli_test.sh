@@ -15,11 +15,12 @@ fail() {
   exit 1
 }
 
-# json_of NAME ARGS...: runs `baize cushion --json ARGS` into $work/NAME.json.
+# json_of NAME ARGS...: runs `baize cushion --json - ARGS` into $work/NAME.json (the JSON alone on
+# standard output: the report goes to standard error).
 json_of() {
   local name=$1
   shift
-  "$baize" cushion --json "$@" >"$work/$name.json" || fail "baize cushion --json $* exited $?"
+  "$baize" cushion --json - "$@" >"$work/$name.json" 2>/dev/null || fail "baize cushion --json - $* exited $?"
 }
 
 # check_python CODE FILES...: runs CODE with the JSON/CSV helpers below and the files as argv.
@@ -49,6 +50,10 @@ done
 
 # ---- 2. JSON: keys, self-consistency and the measured head-on rolling slope.
 json_of default
+# --json FILE: the same object in the file, written whole, and the report on standard output.
+"$baize" cushion --json "$work/made/default.json" >"$work/report.txt" || fail "cushion --json FILE exited $?"
+cmp -s "$work/made/default.json" "$work/default.json" || fail "--json FILE and --json - differ"
+grep -q "^Ball-cushion impact" "$work/report.txt" || fail "--json FILE: no report: $(cat "$work/report.txt")"
 json_of default_paper --solver paper
 check_python '
 d = load(sys.argv[1])
@@ -150,7 +155,7 @@ expect_error 2 "(set by --mu-w)" cushion --mu-w 0.9
 expect_error 2 "(set by --mass)" cushion --mass -0.1
 expect_error 2 "(set by --h)" cushion --h 0.01
 expect_error 2 "baize cushion: error: cushion restitution e_e = 1.5" cushion --e 1.5
-expect_error 2 "--json excludes --sweep" cushion --sweep "$work/never" --json
+expect_error 2 "--json excludes --sweep" cushion --sweep "$work/never" --json "$work/never.json"
 expect_error 2 "--bogus" cushion --bogus
 expect_error 2 "A subcommand is required" bench
 expect_error 2 "--impacts = 0 is not allowed" bench cushion --impacts 0
@@ -368,9 +373,9 @@ assert a["max_error"] != c["max_error"], (a, c)
 same_impact=$(sed -n 's/^the same impact: baize //p' "$work/grippy.out")
 [[ -n "$same_impact" ]] || fail "the grippy bench does not print its worst impact as a command"
 # shellcheck disable=SC2086  # the printed flags, split as a shell splits words
-"$baize" $same_impact --json >"$work/worst.json" || fail "baize $same_impact exited $?"
+"$baize" $same_impact --json - 2>/dev/null >"$work/worst.json" || fail "baize $same_impact exited $?"
 # shellcheck disable=SC2086
-"$baize" $same_impact --json --tolerance 1e-14 >"$work/worst_ref.json" ||
+"$baize" $same_impact --json - --tolerance 1e-14 2>/dev/null >"$work/worst_ref.json" ||
   fail "baize $same_impact --tolerance 1e-14 exited $?"
 check_python '
 solved, reference = load(sys.argv[1]), load(sys.argv[2])

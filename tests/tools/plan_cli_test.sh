@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# baize plan, sweep --png and check --png, run the way a user runs them: a plan's report and
+# baize plan, sweep --png and check --png-dir, run the way a user runs them: a plan's report and
 # picture, bad flags (exit 2, a message naming the flag, no file written), the position map's PNG
 # and pictures of failing suite cases only.
 # Usage: plan_cli_test.sh path/to/baize
@@ -124,7 +124,7 @@ set -e
 grep -q -- "--png" "$work/err.txt" || fail "sweep --png message: $(cat "$work/err.txt")"
 [ ! -e "$work/c.csv" ] || fail "sweep with a bad --png wrote its CSV"
 
-# check --png: only the failing case gets a picture.
+# check --png-dir: only the failing case gets a picture.
 cat >"$work/suite.json" <<'JSON'
 {"cases": [
   {"name": "pots", "scene": "straight.json", "shot": {"aim_at": "1", "speed_mps": 1.5},
@@ -137,19 +137,30 @@ cat >"$work/suite.json" <<'JSON'
 ]}
 JSON
 set +e
-"$baize" check "$work/suite.json" --png "$work/failed" >"$work/check.txt"
+# An earlier run's picture (Baize's case_*.png name) is removed first: the folder shows this run.
+mkdir -p "$work/failed" && echo old >"$work/failed/case_fixed_since.png"
+"$baize" check "$work/suite.json" --png-dir "$work/failed" >"$work/check.txt"
 status=$?
 set -e
 [ $status -eq 1 ] || fail "check exited $status, not 1: $(cat "$work/check.txt")"
 ls "$work/failed" | sort >"$work/pictures.txt"
-printf 'leave.png\nstops_too_far.png\n' | cmp -s - "$work/pictures.txt" ||
-  fail "check --png wrote $(cat "$work/pictures.txt")"
-[ "$(png_size "$work/failed/stops_too_far.png")" = 1600x800 ] || fail "case picture size"
-[ "$(count_colour "$work/failed/stops_too_far.png" $magenta)" -gt 100 ] ||
+printf 'case_leave.png\ncase_stops_too_far.png\n' | cmp -s - "$work/pictures.txt" ||
+  fail "check --png-dir wrote $(cat "$work/pictures.txt")"
+# A folder holding a file Baize did not write is refused before any case runs, and left as it was.
+echo mine >"$work/failed/notes.txt"
+set +e
+err=$("$baize" check "$work/suite.json" --png-dir "$work/failed" 2>&1 >/dev/null); status=$?
+set -e
+[ $status -eq 2 ] || fail "check --png-dir on a user's folder exited $status, not 2"
+grep -q -- "--png-dir = $work/failed is not allowed: it holds 'notes.txt'" <<<"$err" || fail "message: $err"
+[ -e "$work/failed/case_leave.png" ] || fail "a refused folder lost its pictures"
+rm "$work/failed/notes.txt"
+[ "$(png_size "$work/failed/case_stops_too_far.png")" = 1600x800 ] || fail "case picture size"
+[ "$(count_colour "$work/failed/case_stops_too_far.png" $magenta)" -gt 100 ] ||
   fail "the failing case's picture shows no region"
 # A soft roll that leaves ball 1 on the table fails "pocketed" but keeps the straight shot: its
 # picture shows the ghost-ball ring and the two paths.
 grep -q "^FAIL leave | cue_ball_stops_in ok" "$work/check.txt" || fail "leave: $(cat "$work/check.txt")"
-[ "$(count_colour "$work/failed/leave.png" $magenta)" -gt 100 ] ||
+[ "$(count_colour "$work/failed/case_leave.png" $magenta)" -gt 100 ] ||
   fail "the straight shot's ghost ball and paths are not drawn"
 echo "ok"

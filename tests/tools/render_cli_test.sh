@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # baize render and baize simulate --png, run the way a user runs them: pictures of the shipped
-# scenes and of a saved result, frames, the bench in smoke size, and bad input.
+# scenes and of a saved result, frames, animated GIFs, the bench in smoke size, and bad input.
 # Usage: render_cli_test.sh path/to/baize
 set -euo pipefail
 baize=$1
@@ -90,16 +90,93 @@ cmp -s "$work/a.png" "$work/angled.png" && fail "the angled view drew the top vi
 cmp -s "$work/a.png" "$work/legend.png" && fail "--legend drew no legend"
 cmp -s "$work/legend.png" "$work/legend2.png" || fail "two legend pictures differ"
 
-# --frames: one frame per 1/fps s of the shot and one at rest, numbered from 0, each of the size asked.
+# --png-dir: one frame per 1/fps s of the shot and one at rest, numbered from 0, each of the size
+# asked. Frames of an earlier run (Baize's frame_*.png names) are removed first.
 end=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["end_time_s"])' "$work/result.json")
-out=$("$baize" render "$work/result.json" --frames "$work/frames" --fps 2 --width 64 --height 32) ||
-  fail "--frames exited $?"
+mkdir -p "$work/frames" && echo old >"$work/frames/frame_99999.png"
+out=$("$baize" render "$work/result.json" --png-dir "$work/frames" --fps 2 --width 64 --height 32) ||
+  fail "--png-dir exited $?"
 expected=$(python3 -c 'import math,sys; print(math.ceil(float(sys.argv[1]) * 2) + 1)' "$end")
 count=$(ls "$work/frames" | grep -c '^frame_[0-9]\{5\}\.png$')
 [[ $count -eq $expected ]] || fail "$count frames for a shot of $end s at 2 fps, expected $expected"
 [[ -f "$work/frames/frame_00000.png" ]] || fail "frames do not start at frame_00000.png"
 [[ $(png_size "$work/frames/frame_00000.png") == "64 32" ]] || fail "frame size"
 grep -q "^frames: $expected in $work/frames" <<<"$out" || fail "no frames line: $out"
+[[ -e "$work/frames/frame_99999.png" ]] && fail "an earlier run's frame was left in --png-dir"
+# A folder holding a file Baize did not write is refused before any drawing and left as it was.
+echo mine >"$work/frames/notes.txt"
+set +e
+msg=$("$baize" render "$work/result.json" --png-dir "$work/frames" --fps 2 2>&1 >/dev/null); status=$?
+set -e
+[[ $status -eq 2 ]] || fail "--png-dir on a user's folder exited $status"
+grep -q -- "--png-dir = $work/frames is not allowed: it holds 'notes.txt'" <<<"$msg" || fail "message: $msg"
+[[ -e "$work/frames/frame_00000.png" ]] || fail "a refused --png-dir lost its frames"
+# --quiet: the same frames, no note.
+out=$("$baize" render "$work/result.json" --png-dir "$work/quiet" --fps 2 --width 64 --height 32 --quiet)
+[[ -z $out ]] || fail "--quiet printed: $out"
+cmp -s "$work/frames/frame_00001.png" "$work/quiet/frame_00001.png" || fail "--quiet drew another frame"
+
+# --gif: a valid GIF89a of the size asked, one image per frame (the same count as --png-dir), its
+# delays adding up to the frames' time at the rate asked, looping; the same bytes twice over;
+# simulate writes the same animation as render of its result.
+gif_facts() {  # prints: width height frames total-delay-in-hundredths loops
+  python3 - "$1" <<'PY'
+import struct, sys
+d = open(sys.argv[1], "rb").read()
+assert d[:6] == b"GIF89a", "not a GIF89a"
+w, h, packed = struct.unpack("<HHB", d[6:11])
+i = 13 + (3 * 2 ** ((packed & 7) + 1) if packed & 0x80 else 0)
+def skip_blocks(i):
+    while d[i]:
+        i += d[i] + 1
+    return i + 1
+frames = delay = 0
+loops = False
+while True:
+    b = d[i]
+    if b == 0x3B:
+        break
+    if b == 0x21:
+        label = d[i + 1]
+        if label == 0xF9:
+            delay += struct.unpack("<H", d[i + 4:i + 6])[0]
+        if label == 0xFF and d[i + 3:i + 14] == b"NETSCAPE2.0":
+            loops = True
+        i = skip_blocks(i + 2)
+    elif b == 0x2C:
+        x, y, fw, fh, fp = struct.unpack("<HHHHB", d[i + 1:i + 10])
+        assert (x, y, fw, fh) == (0, 0, w, h), "a frame that does not cover the picture"
+        i += 10 + (3 * 2 ** ((fp & 7) + 1) if fp & 0x80 else 0)
+        i = skip_blocks(i + 1)  # after the LZW minimum code size
+        frames += 1
+    else:
+        raise SystemExit("unexpected block 0x%02x at %d" % (b, i))
+assert i == len(d) - 1, "bytes after the trailer"
+print(w, h, frames, delay, int(loops))
+PY
+}
+out=$("$baize" render "$work/result.json" --gif "$work/out/shot.gif" --fps 4 --width 120 --height 60) ||
+  fail "--gif exited $?"
+gif_expected=$(python3 -c 'import math,sys; print(math.ceil(float(sys.argv[1]) * 4) + 1)' "$end")
+read -r gw gh gframes gdelay gloops <<<"$(gif_facts "$work/out/shot.gif")"
+[[ "$gw $gh" == "120 60" ]] || fail "GIF size $gw x $gh"
+[[ $gframes -eq $gif_expected ]] || fail "$gframes GIF frames for a shot of $end s at 4 fps, expected $gif_expected"
+[[ $gdelay -eq $((gif_expected * 25)) ]] || fail "GIF delays add up to $gdelay hundredths, expected $((gif_expected * 25))"
+[[ $gloops -eq 1 ]] || fail "the GIF does not loop"
+grep -q "^animation: $work/out/shot.gif ($gif_expected frames, 120 x 60 px, 4 per second)$" <<<"$out" ||
+  fail "no animation line: $out"
+"$baize" render "$work/result.json" --gif "$work/again.gif" --fps 4 --width 120 --height 60 >/dev/null
+cmp -s "$work/out/shot.gif" "$work/again.gif" || fail "two GIFs of the same shot differ"
+"$baize" simulate "$scene" --gif "$work/simulated.gif" --fps 4 --width 120 --height 60 >/dev/null
+cmp -s "$work/out/shot.gif" "$work/simulated.gif" || fail "simulate --gif and render --gif differ"
+# 30 fps is no whole number of hundredths: the delays (3 or 4) keep real time.
+"$baize" render "$work/result.json" --gif "$work/thirty.gif" --fps 30 --width 32 --height 16 >/dev/null
+read -r gw gh gframes gdelay gloops <<<"$(gif_facts "$work/thirty.gif")"
+python3 -c 'import sys; f, d = int(sys.argv[1]), int(sys.argv[2]); sys.exit(abs(d - f * 100 / 30) > 1)' \
+  "$gframes" "$gdelay" || fail "$gframes frames at 30 fps last $gdelay hundredths"
+# --png -: the picture on standard output alone (the note goes to standard error).
+"$baize" render "$scene" --png - --width 640 --height 320 >"$work/stdout.png" 2>/dev/null
+cmp -s "$work/a.png" "$work/stdout.png" || fail "--png - wrote another picture to standard output"
 
 # Bad input: exit 2, a message naming what is wrong, no file (and no temporary) left behind.
 expect_refused() {  # expect_refused WHAT-TO-FIND OUTPUT-THAT-MUST-NOT-EXIST ARGS...
@@ -118,7 +195,16 @@ expect_refused "--width" "$work/x.png" render "$scene" --png "$work/x.png" --wid
 expect_refused "--height" "$work/x.png" render "$scene" --png "$work/x.png" --height 100000
 expect_refused "--view" "$work/x.png" render "$scene" --png "$work/x.png" --view side
 expect_refused "--at" "$work/x.png" render "$scene" --png "$work/x.png" --at -1
-expect_refused "--fps" "$work/f/frame_00000.png" render "$scene" --frames "$work/f" --fps 0
+expect_refused "--fps" "$work/f/frame_00000.png" render "$scene" --png-dir "$work/f" --fps 0
+expect_refused "--fps = 101 is not allowed" "$work/x.gif" render "$scene" --gif "$work/x.gif" --fps 101
+# A flag that would do nothing is refused, naming it and what it needs.
+expect_refused "--fps sets the frame rate of --png-dir and --gif" "$work/x.png" \
+  render "$scene" --png "$work/x.png" --fps 10
+expect_refused "--at sets the time of the one picture of --png" "$work/x.gif" \
+  render "$scene" --gif "$work/x.gif" --at 1
+expect_refused "--legend shapes a picture: give --png, --png-dir or --gif" "$work/y.json" \
+  simulate "$scene" --json "$work/y.json" --legend
+expect_refused "both name standard output" "$work/x.png" simulate "$scene" --json - --png -
 touch "$work/a-file"
 expect_refused "--png" "$work/a-file/x.png" render "$scene" --png "$work/a-file/x.png"
 expect_refused "--png" "$work/x.png" render "$scene"

@@ -157,11 +157,17 @@ for bad in "--shots 0" "--balls 1" "--balls 99" "--threads -1" "--threads 1025" 
   [[ $status == 2 ]] || fail "baize stress $bad exited $status, want 2"
   grep -q "is not allowed" "$work/err.txt" || fail "baize stress $bad: no message naming the value"
 done
+# --failures follows the output-folder rule (docs/commands.md): made if missing, a folder holding a
+# file Baize did not write there refused before any shot, the file left alone.
+"$baize" stress --shots 10 --failures "$work/new/failures" >/dev/null || fail "--failures in a new folder"
+[[ -d "$work/new/failures" ]] || fail "--failures did not make its folder"
+echo mine >"$work/new/failures/notes.txt"
 status=0
-"$baize" stress --shots 10 --failures "$work/no-such-dir" >/dev/null 2>"$work/err.txt" || status=$?
-[[ $status == 2 ]] || fail "--failures with a missing directory exited $status, want 2"
-grep -q "no-such-dir is not allowed: it must be an existing directory" "$work/err.txt" ||
-  fail "--failures with a missing directory: $(cat "$work/err.txt")"
+"$baize" stress --shots 10 --failures "$work/new/failures" >/dev/null 2>"$work/err.txt" || status=$?
+[[ $status == 2 ]] || fail "--failures on a folder with a user's file exited $status, want 2"
+grep -q -- "--failures = $work/new/failures is not allowed: it holds 'notes.txt'" "$work/err.txt" ||
+  fail "--failures on a user's folder: $(cat "$work/err.txt")"
+[[ $(cat "$work/new/failures/notes.txt") == mine ]] || fail "the user's file was touched"
 echo '{"format": "baize stress state", "table": "billiards", "max_events": 5, "balls": []}' >"$work/bad.json"
 status=0
 "$baize" stress --replay "$work/bad.json" >/dev/null 2>"$work/err.txt" || status=$?

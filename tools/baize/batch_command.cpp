@@ -19,6 +19,7 @@
 #include "engine/play/shot_suite.h"
 #include "engine/sim/cushion_solve_ahead.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/thread_flag.h"
 
 namespace baize::tools {
@@ -141,6 +142,7 @@ int runBatch(const BatchFlags& flags) {
       from_stdin ? "" : std::filesystem::path(flags.input).parent_path().string();
 
   long number = 0, shots = 0, failures = 0;
+  Progress progress("shots", 0);  // the input's length is not known ahead
   std::vector<InputLine> chunk;
   std::string text;
   bool more = true;
@@ -159,6 +161,7 @@ int runBatch(const BatchFlags& flags) {
         bool line_failed = false;
         results[i] = runLine(chunk[i], input_name, folder, &line_failed);
         failed[i] = line_failed;
+        progress.advance();
       }
     };
     std::vector<std::thread> pool;

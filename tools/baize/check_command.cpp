@@ -14,6 +14,8 @@
 #include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/output_folder.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/overlay_pictures.h"
 
 namespace baize::tools {
@@ -66,6 +68,9 @@ std::string fileNameOf(const std::string& case_name) {
 }
 
 // Draws a failing case's shot with its expected regions to DIR/<case>.png.
+// The pictures of failing cases: case_<case>.png.
+const OutputFileNames kCasePictureNames{"case_", ".png"};
+
 void drawFailingCase(const engine::SuiteCase& c, const std::string& dir, PngPainter& painter) {
   const engine::SceneRun run = engine::runScene(c.scene, true);
   const engine::ShotOutcome outcome = engine::shotOutcome(run, c.scene.cue_ball);
@@ -76,9 +81,12 @@ void drawFailingCase(const engine::SuiteCase& c, const std::string& dir, PngPain
       addRegion(picture, c.scene, outcome, e.region, pixel_m);
     }
   }
-  const std::string path = (std::filesystem::path(dir) / (fileNameOf(c.name) + ".png")).string();
+  const std::string path =
+      (std::filesystem::path(dir) / (kCasePictureNames.prefix + fileNameOf(c.name) +
+                                     kCasePictureNames.suffix))
+          .string();
   painter.write(picture, path);
-  std::cout << "  picture: " << path << "\n";
+  note(std::cout) << "  picture: " << path << "\n";
 }
 
 std::string xmlEscaped(const std::string& text) {
@@ -135,14 +143,7 @@ int runCheck(const CheckFlags& flags) {
   const engine::Suite suite = engine::loadSuite(flags.suite);
   std::unique_ptr<PngPainter> painter;
   if (!flags.png_dir.empty()) {
-    std::error_code error;
-    std::filesystem::create_directories(flags.png_dir, error);
-    if (!std::filesystem::is_directory(flags.png_dir, error)) {
-      throw UsageError("--png = " + flags.png_dir +
-                       " is not allowed: it must be a directory (made if missing) for the "
-                       "pictures of the failing cases");
-    }
-    checkOutputPath("--png", (std::filesystem::path(flags.png_dir) / "probe.png").string());
+    prepareOutputFolder("--png-dir", flags.png_dir, kCasePictureNames);
     painter = std::make_unique<PngPainter>();
   }
 
@@ -154,7 +155,8 @@ int runCheck(const CheckFlags& flags) {
             << ")\n";
   int passed = 0, failed = 0, errors = 0;
   std::ostringstream cases_xml;
-  for (std::size_t i = 0; i < suite.cases.size(); ++i) {
+  Progress progress("cases", static_cast<long>(suite.cases.size()));
+  for (std::size_t i = 0; i < suite.cases.size(); ++i, progress.advance()) {
     const engine::SuiteCase& c = suite.cases[i];
     const auto start = std::chrono::steady_clock::now();
     const engine::CaseResult result = engine::runCase(c);
@@ -222,22 +224,33 @@ void addCheckCommand(CLI::App& parent) {
   command->add_option("--junit", flags->junit_path, "also write a JUnit XML report here")
       ->check(notEmpty());
   command
-      ->add_option("--png", flags->png_dir,
-                   "draw each failing case's shot with its expected region to DIR/<case>.png")
+      ->add_option("--png-dir", flags->png_dir,
+                   "draw each failing case's shot with its expected region to DIR/case_<case>.png")
       ->check(notEmpty());
-  command->add_option("--noise", flags->noise_samples,
-                      "also run N samples of each case with execution error and report the "
-                      "probability of each expectation (pass/fail stays the noise-free shot's)");
+  CLI::Option* noise =
+      command->add_option("--noise", flags->noise_samples,
+                          "also run N samples of each case with execution error and report the "
+                          "probability of each expectation (pass/fail stays the noise-free shot's)");
+  // The execution error's flags do nothing without samples: CLI11 refuses them alone, naming both.
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
-      ->check(unsigned64());
-  command->add_option("--sigma-tip-mm", flags->tip_sigma_mm,
-                      "execution error on each tip offset, mm (default 0.5)");
-  command->add_option("--sigma-elevation-deg", flags->noise.elevation_sigma_deg,
-                      "execution error on the elevation, deg (default 0.1)");
-  command->add_option("--sigma-aim-deg", flags->noise.aim_sigma_deg,
-                      "execution error on the aim, deg (default 0.125)");
-  command->add_option("--sigma-speed-mps", flags->noise.speed_sigma_mps,
-                      "execution error on the cue speed, m/s (default 0.075)");
+      ->check(unsigned64())
+      ->needs(noise);
+  command
+      ->add_option("--sigma-tip-mm", flags->tip_sigma_mm,
+                   "execution error on each tip offset, mm (default 0.5)")
+      ->needs(noise);
+  command
+      ->add_option("--sigma-elevation-deg", flags->noise.elevation_sigma_deg,
+                   "execution error on the elevation, deg (default 0.1)")
+      ->needs(noise);
+  command
+      ->add_option("--sigma-aim-deg", flags->noise.aim_sigma_deg,
+                   "execution error on the aim, deg (default 0.125)")
+      ->needs(noise);
+  command
+      ->add_option("--sigma-speed-mps", flags->noise.speed_sigma_mps,
+                   "execution error on the cue speed, m/s (default 0.075)")
+      ->needs(noise);
   command->callback([flags] {
     int status = 0;
     if (const int error = runReportingErrors("check", [&] { status = runCheck(*flags); })) {

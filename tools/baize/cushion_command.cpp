@@ -13,6 +13,7 @@
 #include "physics/cushion_model.h"
 #include "physics/cushion_paper_solver.h"
 #include "physics/value_text.h"
+#include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/cushion_param_flags.h"
 #include "tools/baize/cushion_run.h"
@@ -27,7 +28,7 @@ struct CushionFlags {
   SolverSetting setting;
   CushionParamFlags cushion_flags;  // as given
   physics::CushionParams params;    // from cushion_flags, checked
-  bool json = false;
+  std::string json_path;  // the JSON object of the rebound, when set ("-": standard output)
   std::string sweep_directory;
   CLI::Option* sweep_flag = nullptr;
   CLI::Option* steps_flag = nullptr;      // the paper solver's only
@@ -115,7 +116,7 @@ void printHuman(const CushionFlags& flags, const physics::BallVelocity& incoming
 
 nlohmann::json vectorJson(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
 
-void printJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
+void writeJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
                const physics::CushionImpactResult& result) {
   const physics::CushionParams& p = flags.params;
   const CushionShot& shot = flags.shot;
@@ -155,7 +156,9 @@ void printJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
       {"rhs_evaluations", result.rhs_evaluations},
   };
   // nlohmann::json writes each double with the shortest digits that read back bit for bit.
-  std::cout << out.dump(2) << '\n';
+  AtomicFile file(flags.json_path, "--json");
+  file.stream() << out.dump(2) << '\n';
+  file.commit();
 }
 
 // A physics refusal with the flag that set the value named ("... (set by --tolerance)").
@@ -190,6 +193,7 @@ void solveAndPrint(CushionFlags& flags) {
   flags.setting.kind = flags.solver == "paper" ? SolverKind::Paper : SolverKind::Exact;
   validateFlags(flags);
   flags.params = cushionParamsOf(flags.cushion_flags);
+  if (!flags.json_path.empty()) checkOutputPath("--json", flags.json_path);
   if (flags.sweep_flag->count() > 0) {
     for (const std::string& path :
          writeCushionSweep(flags.sweep_directory, flags.params, flags.setting)) {
@@ -201,11 +205,8 @@ void solveAndPrint(CushionFlags& flags) {
   const physics::CushionImpactResult result =
       solveCushionShot(flags.params, incoming, flags.setting);
   refuseEnergyGain(flags, incoming, result.after);
-  if (flags.json) {
-    printJson(flags, incoming, result);
-  } else {
-    printHuman(flags, incoming, result);
-  }
+  printHuman(flags, incoming, result);
+  if (!flags.json_path.empty()) writeJson(flags, incoming, result);
 }
 
 void runCushion(CushionFlags& flags) {
@@ -256,7 +257,11 @@ void addCushionCommand(CLI::App& parent) {
 
   addCushionParamFlags(command, &flags->cushion_flags);
 
-  CLI::Option* json = command->add_flag("--json", flags->json, "print one JSON object");
+  CLI::Option* json =
+      command
+          ->add_option("--json", flags->json_path,
+                       "also write the rebound as one JSON object to this file (-: standard output)")
+          ->check(notEmpty());
   flags->sweep_flag =
       command
           ->add_option("--sweep", flags->sweep_directory,

@@ -16,8 +16,10 @@
 #include "tools/baize/command_lookup.h"
 #include "tools/baize/cushion_command.h"
 #include "tools/baize/plan_command.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/render_command.h"
 #include "tools/baize/simulate_command.h"
+#include "tools/baize/standard_output.h"
 #include "tools/baize/stress_command.h"
 #include "tools/baize/sweep_command.h"
 
@@ -43,6 +45,7 @@ int main(int argc, char** argv) {
   addBenchAccuracyCommand(*bench);
   addBenchRenderCommand(*bench);
 
+  addQuietFlag(app);
   app.set_version_flag("--version", std::string("baize ") + BAIZE_VERSION);
   app.footer("Run 'baize help COMMAND' (or 'baize COMMAND --help') for a command's flags.");
 
@@ -58,7 +61,11 @@ int main(int argc, char** argv) {
       return 0;
     }
     checkCommandWords(app, words);
+    const ReportsToStandardError reports(outputFlagsOnStandardOutput(words));
     app.parse(argc, argv);
+  } catch (const UsageError& refused) {
+    std::cerr << "baize: error: " << refused.what() << '\n';
+    return kExitUsage;
   } catch (const CLI::RuntimeError& failed) {  // a command that ran and reported its own error
     return failed.get_exit_code();
   } catch (const CLI::ParseError& error) {

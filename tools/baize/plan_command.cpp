@@ -13,6 +13,7 @@
 #include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/overlay_pictures.h"
 
 namespace baize::tools {
@@ -194,7 +195,13 @@ void runPlan(const PlanFlags& flags) {
             << (region ? ", stopping in " + flags.region : std::string()) << "; budget "
             << flags.budget << " shots, " << flags.noise_samples
             << " fresh samples per reported shot, seed " << flags.seed << "\n";
-  const engine::PlanResult planned = engine::planShot(scene, goal, options);
+  engine::PlanResult planned;
+  {
+    Progress progress("shots of the search", flags.budget);
+    options.on_shot = [&progress] { progress.advance(); };
+    planned = engine::planShot(scene, goal, options);
+  }
+  options.on_shot = nullptr;
   const engine::ProbabilityEstimate best =
       report("planner", planned, scene, goal, options, flags.noise_samples, kFreshStreamBase);
   if (flags.compare_grid) {
@@ -213,7 +220,7 @@ void runPlan(const PlanFlags& flags) {
     render::Picture picture = shotPicture(scene, run, pixel_m);
     if (region) addRegion(picture, scene, outcome, *region, pixel_m);
     PngPainter().write(picture, flags.png_path);
-    std::cout << "picture: " << flags.png_path << "\n";
+    note(std::cout) << "picture: " << flags.png_path << "\n";
   }
 }
 
@@ -241,10 +248,13 @@ void addPlanCommand(CLI::App& parent) {
   command->add_option("--report", flags->report, "shots reported (default 3)");
   command->add_option("--png", flags->png_path, "draw the best shot with its region here (PNG)")
       ->check(notEmpty());
-  command->add_flag("--compare-grid", flags->compare_grid,
-                    "also run a blind grid of the same budget and compare the best probabilities");
-  command->add_option("--grid-samples", flags->grid_samples,
-                      "noisy samples per grid point with --compare-grid (default 10)");
+  CLI::Option* compare_grid = command->add_flag(
+      "--compare-grid", flags->compare_grid,
+      "also run a blind grid of the same budget and compare the best probabilities");
+  command
+      ->add_option("--grid-samples", flags->grid_samples,
+                   "noisy samples per grid point with --compare-grid (default 10)")
+      ->needs(compare_grid);
   command->callback([flags] {
     if (const int status = runReportingErrors("plan", [&] { runPlan(*flags); })) {
       throw CLI::RuntimeError(status);

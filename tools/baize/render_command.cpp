@@ -17,7 +17,7 @@ struct RenderFlags {
 
 void runRender(const RenderFlags& flags) {
   if (!flags.pictures.wanted()) {
-    throw UsageError("nothing to write: give --png OUT.png or --frames DIR");
+    throw UsageError("nothing to write: give --png FILE, --png-dir DIR or --gif FILE");
   }
   checkPictureFlags(flags.pictures);
   writePictures(render::loadShotRecord(flags.input), flags.pictures);
@@ -28,7 +28,7 @@ void runRender(const RenderFlags& flags) {
 void addRenderCommand(CLI::App& parent) {
   auto flags = std::make_shared<RenderFlags>();
   CLI::App* command =
-      parent.add_subcommand("render", "Draw a shot (a scene or a result file) as PNG pictures");
+      parent.add_subcommand("render", "Draw a shot (a scene or a result file) as a PNG picture, numbered PNG frames or an animated GIF");
   command
       ->add_option("input", flags->input,
                    "a scene file (docs/scenes.md) or a result file of 'baize simulate --json' or "

@@ -1,16 +1,19 @@
-// The picture flags shared by `baize render` and `baize simulate` (--png, --width, --height,
-// --view, --legend, --at, --frames, --fps) and writing the pictures they ask for: one PNG of the
-// shot at a time (the end by default) and/or numbered PNG frames of it in real time.
+// The picture flags shared by `baize render` and `baize simulate` (--png, --png-dir, --gif,
+// --width, --height, --view, --legend, --at, --fps) and writing the pictures they ask for: one PNG
+// of the shot at a time (the end by default), numbered PNG frames of it in real time, and/or an
+// animated GIF of the same frames.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "render/shot_record.h"
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace baize::tools {
@@ -22,10 +25,17 @@ struct PictureFlags {
   std::string view = "top";
   bool legend = false;
   std::optional<double> at_s;  // draw the balls at this time (default: the end of the shot)
-  std::string frames_dir;      // numbered frames frame_00000.png ... when set
+  std::string frames_dir;      // numbered frames frame_00000.png ... when set (--png-dir)
+  std::string gif_path;        // the animation, when set
   double fps = 30;
+  // The parser's options, to tell a flag given from its default: each of these is refused
+  // without the output it shapes.
+  std::vector<const CLI::Option*> shaping_options;  // --width ... --legend: any picture output
+  const CLI::Option* fps_option = nullptr;          // --png-dir or --gif
+  const CLI::Option* at_option = nullptr;           // --png
 
-  bool wanted() const { return !png_path.empty() || !frames_dir.empty(); }
+  bool animated() const { return !frames_dir.empty() || !gif_path.empty(); }
+  bool wanted() const { return !png_path.empty() || animated(); }
 };
 
 // The most frames one command writes (an hour at 30 frames a second would be far beyond any shot).

@@ -88,7 +88,7 @@ std::string vectorText(const Eigen::Vector3d& v) {
 void runSimulate(const SimulateFlags& flags) {
   std::unique_ptr<AtomicFile> json_file;
   if (!flags.json_path.empty()) json_file = std::make_unique<AtomicFile>(flags.json_path, "--json");
-  checkPictureFlags(flags.pictures);  // also without --png or --frames: a bad value is an error
+  checkPictureFlags(flags.pictures);  // also without a picture output: a bad value is an error
   const engine::Scene scene = withFlaggedModels(engine::loadScene(flags.scene), flags);
   std::vector<std::string> scene_ids;
   for (const engine::PlacedBall& b : scene.balls) scene_ids.push_back(b.id);

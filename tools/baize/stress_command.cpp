@@ -25,6 +25,8 @@
 #include "physics/cue_strike.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/output_folder.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/thread_flag.h"
 
 namespace baize::tools {
@@ -34,8 +36,6 @@ using physics::BallState;
 
 // How many failing shots are printed in full (all of them are written with --failures).
 constexpr int kMaxReportedShots = 10;
-// A progress line goes to stderr every this many shots (long runs take many minutes).
-constexpr long kProgressShots = 50000;
 // The "format" of a state file (a failing shot that no scene can express).
 constexpr const char* kStateFormat = "baize stress state";
 
@@ -103,6 +103,9 @@ nlohmann::json reproductionJson(const FailedShot& f, const StressFlags& flags) {
           {"first_failure", f.check.first_message},
           {"balls", ballsJson(f.made.balls)}};
 }
+
+// Every reproduction file's name: seed<S>-shot<N>.scene.json or .state.json.
+const OutputFileNames kReproductionNames{"seed", ".json"};
 
 std::string reproductionFileName(const FailedShot& f, const StressFlags& flags) {
   return "seed" + std::to_string(flags.seed) + "-shot" + std::to_string(f.shot) +
@@ -174,7 +177,7 @@ Tally runShots(const StressFlags& flags, const engine::StressTables& tables,
                bool* stopped_by_budget) {
   std::atomic<long> next{0};
   std::atomic<bool> stop{false};
-  std::mutex progress_mutex;
+  Progress progress("shots", flags.shots);
   const auto started = std::chrono::steady_clock::now();
   std::vector<Tally> tallies(flags.threads);
   auto work = [&](Tally* tally) {
@@ -187,13 +190,7 @@ Tally runShots(const StressFlags& flags, const engine::StressTables& tables,
       if (stop) return;
       const long shot = next.fetch_add(1);
       if (shot >= flags.shots) return;
-      if (shot > 0 && shot % kProgressShots == 0) {
-        const std::lock_guard<std::mutex> lock(progress_mutex);
-        std::cerr
-            << "stress: shot " << shot << " of " << flags.shots << " begun after "
-            << std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
-            << " s\n";
-      }
+      progress.advance();
       engine::StressShot made;
       engine::StressShotOutcome outcome;
       try {
@@ -266,9 +263,8 @@ void runStress(StressFlags flags) {  // a copy: --threads is resolved in it
   if (flags.max_events < 1) {
     rejectFlag("--max-events", static_cast<double>(flags.max_events), "it must be >= 1");
   }
-  if (!flags.failures_dir.empty() && !std::filesystem::is_directory(flags.failures_dir)) {
-    throw UsageError("--failures " + flags.failures_dir +
-                     " is not allowed: it must be an existing directory");
+  if (!flags.failures_dir.empty()) {
+    prepareOutputFolder("--failures", flags.failures_dir, kReproductionNames);
   }
   const engine::StressTables tables = engine::makeStressTables();
   const auto started = std::chrono::steady_clock::now();
@@ -358,7 +354,8 @@ void addStressCommand(CLI::App& parent) {
       ->capture_default_str();
   command
       ->add_option("--failures", flags->failures_dir,
-                   "write a reproduction of every failing shot into this directory")
+                   "write a reproduction of every failing shot into this folder (made if missing; "
+                   "earlier reproductions removed)")
       ->check(notEmpty());
   command
       ->add_option("--replay", flags->replay_path,

@@ -20,6 +20,7 @@
 #include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/overlay_pictures.h"
 
 namespace baize::tools {
@@ -227,7 +228,8 @@ void runSweep(const SweepFlags& flags) {
   const physics::CueShot base = scene.shot;
   const long inner = axes.size() == 2 ? axes[1].count : 1;
   std::vector<render::MapPoint> map;
-  for (long row = 0; row < rows; ++row) {
+  Progress progress("points", rows);
+  for (long row = 0; row < rows; ++row, progress.advance()) {
     const long i = row / inner, j = row % inner;
     scene.shot = base;
     bool marked = false;  // this row's noise-free shot ran and has its marker
@@ -279,7 +281,7 @@ void runSweep(const SweepFlags& flags) {
     PngPainter().write(
         render::buildPositionMap(scene.table, map, map_axes, pixel_m, flags.noise_samples),
         flags.png_path);
-    std::cerr << "picture: " << flags.png_path << " (" << map.size() << " finishing positions)\n";
+    note(std::cerr) << "picture: " << flags.png_path << " (" << map.size() << " finishing positions)\n";
   }
   if (csv) csv->commit();
 }
@@ -302,12 +304,14 @@ void addSweepCommand(CLI::App& parent) {
                    "the ball whose pocketing object_pocketed reports (default: any ball but "
                    "the cue ball)")
       ->check(notEmpty());
-  command->add_option("--noise", flags->noise_samples,
-                      "also run N samples per point with the default execution error and write "
-                      "pocketing probabilities and the spread of the cue ball's finishing "
-                      "positions");
+  CLI::Option* noise =
+      command->add_option("--noise", flags->noise_samples,
+                          "also run N samples per point with the default execution error and "
+                          "write pocketing probabilities and the spread of the cue ball's "
+                          "finishing positions");
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
-      ->check(unsigned64());
+      ->check(unsigned64())
+      ->needs(noise);
   command
       ->add_option("--png", flags->png_path,
                    "also draw the position map here: finishing positions coloured by the "
