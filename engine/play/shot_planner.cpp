@@ -91,24 +91,6 @@ std::optional<ShotOutcome> runShot(Scene& scene, const physics::CueShot& shot, S
   }
 }
 
-// The object ball's direction just after the cue ball first hits it, minus the direction wanted
-// (rad); nothing when the cue ball does not hit it first.
-std::optional<double> objectDirectionError(const SceneRun& run, const std::string& cue,
-                                           const std::string& object, double wanted_rad) {
-  const auto index = [&](const std::string& id) {
-    return static_cast<int>(std::find(run.ball_ids.begin(), run.ball_ids.end(), id) -
-                            run.ball_ids.begin());
-  };
-  const int c = index(cue), o = index(object);
-  for (const Event& e : run.result.events) {
-    if (e.kind != EventKind::BallBall || (e.ball != c && e.other != c)) continue;
-    if (e.ball != o && e.other != o) return std::nullopt;  // another ball first
-    const Eigen::Vector3d v = e.after[e.ball == o ? 0 : 1].velocity;
-    return wrappedAngle(std::atan2(v.y(), v.x()) - wanted_rad);
-  }
-  return std::nullopt;
-}
-
 struct Candidate {
   physics::CueShot shot;
   bool ran = false;
@@ -317,6 +299,23 @@ void validateOptions(const PlanOptions& options) {
 }
 
 }  // namespace
+
+std::optional<double> objectDirectionError(const SceneRun& run, const std::string& cue,
+                                           const std::string& object, double wanted_rad) {
+  const auto index = [&](const std::string& id) {
+    return static_cast<int>(std::find(run.ball_ids.begin(), run.ball_ids.end(), id) -
+                            run.ball_ids.begin());
+  };
+  const int c = index(cue), o = index(object);
+  for (const Event& e : run.result.events) {
+    if (e.kind != EventKind::BallBall || (e.ball != c && e.other != c)) continue;
+    if (e.ball != o && e.other != o) return std::nullopt;  // another ball first
+    const Eigen::Vector3d v = e.after[e.ball == o ? 0 : 1].velocity;
+    return wrappedAngle(std::atan2(v.y(), v.x()) - wanted_rad);
+  }
+  return std::nullopt;
+}
+
 
 bool goalMet(const Scene& scene, const PlanGoal& goal, const ShotOutcome& outcome) {
   if (!pottedInPocket(goal, outcome) || outcome.cue_ball_pocketed) return false;

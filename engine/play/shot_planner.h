@@ -77,6 +77,11 @@ struct PlanResult {
   int candidates = 0;  // noise-free candidates tried (the grid: points)
 };
 
+// The object ball's direction just after the cue ball first hits it, minus the direction wanted
+// (rad, wrapped to [-pi, pi]); nothing when the cue ball hits another ball first or none.
+std::optional<double> objectDirectionError(const SceneRun& run, const std::string& cue,
+                                           const std::string& object, double wanted_rad);
+
 // Whether a run's outcome meets the goal.
 bool goalMet(const Scene& scene, const PlanGoal& goal, const ShotOutcome& outcome);
 

@@ -16,6 +16,7 @@
 #include "tools/baize/command_lookup.h"
 #include "tools/baize/cushion_command.h"
 #include "tools/baize/plan_command.h"
+#include "tools/baize/play_command.h"
 #include "tools/baize/progress.h"
 #include "tools/baize/render_command.h"
 #include "tools/baize/simulate_command.h"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   addCheckCommand(app);
   addCushionCommand(app);
   addPlanCommand(app);
+  addPlayCommand(app);
   addSimulateCommand(app);
   addRenderCommand(app);
   addStressCommand(app);

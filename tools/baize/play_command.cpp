@@ -1,0 +1,176 @@
+#include "tools/baize/play_command.h"
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "engine/play/games/frame_summary.h"
+#include "engine/play/games/game_log.h"
+#include "render/shot_picture.h"
+#include "tools/baize/atomic_file.h"
+#include "tools/baize/cli_errors.h"
+#include "tools/baize/overlay_pictures.h"
+#include "tools/baize/shot_file.h"
+
+namespace baize::tools {
+namespace {
+
+// The most shots one frame may take: far beyond any real frame, a bound on a typo.
+constexpr int kMaxShotsAllowed = 10000;
+
+struct PlayFlags {
+  std::string game;
+  std::uint64_t seed = 1;
+  double noise = 1;
+  std::string log_path;
+  std::string shots_path;
+  std::string png_dir;
+  bool quiet = false;
+  int max_shots = 400;
+};
+
+engine::Game gameFlag(const std::string& name) {
+  if (const std::optional<engine::Game> game = engine::gameNamed(name)) return *game;
+  std::string known;
+  for (const std::string& n : engine::gameNames()) known += (known.empty() ? "" : ", ") + n;
+  throw UsageError("GAME = " + name + " is not allowed: the games are " + known);
+}
+
+void checkFlags(const PlayFlags& flags) {
+  if (!(std::isfinite(flags.noise) && flags.noise >= 0)) {
+    rejectFlag("--noise", flags.noise, "a multiple of the default execution-noise sigmas, >= 0");
+  }
+  if (flags.max_shots < 1 || flags.max_shots > kMaxShotsAllowed) {
+    rejectFlag("--max-shots", flags.max_shots,
+               "a number of shots in [1, " + std::to_string(kMaxShotsAllowed) + "]");
+  }
+  if (!flags.log_path.empty() && flags.log_path != "-") checkOutputPath("--log", flags.log_path);
+  if (!flags.png_dir.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(flags.png_dir, error);
+    if (!std::filesystem::is_directory(flags.png_dir, error)) {
+      throw UsageError("--png-dir = " + flags.png_dir +
+                       " is not allowed: it must be a directory (made if missing)");
+    }
+    checkOutputPath("--png-dir", (std::filesystem::path(flags.png_dir) / "probe.png").string());
+  }
+}
+
+// Player A's shots from the file, line after line; the game player takes over after the last.
+engine::ShotSource fileSource(const std::string& path, const engine::GameSetup& setup) {
+  auto lines = std::make_shared<std::vector<ShotLine>>(readShotFile(path));
+  auto next = std::make_shared<std::size_t>(0);
+  return [lines, next, path, setup](const engine::GameState& state)
+             -> std::optional<engine::GameShot> {
+    if (*next >= lines->size()) return std::nullopt;
+    return shotFromLine((*lines)[(*next)++], path, state, setup);
+  };
+}
+
+void writeLog(const engine::PlayedFrame& frame, const std::string& path) {
+  std::ostringstream text;
+  for (std::size_t i = 0; i < frame.shots.size(); ++i) {
+    text << engine::playedShotJson(frame.shots[i], static_cast<int>(i)).dump() << "\n";
+  }
+  if (path == "-") {
+    std::cout << text.str();
+    return;
+  }
+  AtomicFile file(path, "--log");
+  file.stream() << text.str();
+  file.commit();
+}
+
+void writePictures(const engine::GameSetup& setup, const engine::PlayedFrame& frame,
+                   const std::string& dir) {
+  PngPainter painter;
+  const double pixel_m =
+      render::pixelSizeFor(setup.scene.table, kOverlayWidth_px, kOverlayHeight_px);
+  for (std::size_t i = 0; i < frame.shots.size(); ++i) {
+    const engine::PlayedShot& shot = frame.shots[i];
+    engine::GameShot stroke = shot.intended;
+    stroke.shot = shot.executed;
+    const engine::Scene scene = engine::shotScene(setup, shot.state, stroke);
+    if (!shot.ran) continue;  // a miscue: nothing moved
+    const engine::SceneRun run = engine::runScene(scene, true);
+    std::ostringstream name;
+    name << "shot_" << std::setw(3) << std::setfill('0') << i << ".png";
+    painter.write(shotPicture(scene, run, pixel_m), (std::filesystem::path(dir) / name.str()).string());
+  }
+}
+
+void printSummary(const engine::PlayedFrame& frame, const engine::Game game) {
+  const engine::FrameSummary s = engine::summarizeFrame(frame);
+  const char* names[] = {"A", "B"};
+  std::cout << engine::gameName(game) << ": " << frame.shots.size() << " shots, ";
+  if (s.finished) {
+    std::cout << "player " << names[s.winner] << " won" << (s.run_out ? " (break and run)" : "");
+  } else {
+    std::cout << "unfinished (shot limit)";
+  }
+  if (game == engine::Game::Snooker) {
+    std::cout << ", score " << frame.final_state.score[0] << "-" << frame.final_state.score[1];
+  }
+  std::cout << "\n";
+  for (int p = 0; p < 2; ++p) {
+    const engine::PlayerSummary& ps = s.players[p];
+    std::cout << "  player " << names[p] << ": " << ps.shots << " shots, " << ps.visits
+              << " visits, " << ps.potted << " potted, " << ps.fouls << " fouls, best visit "
+              << ps.best_visit << (game == engine::Game::Snooker ? " points" : " balls") << "\n";
+  }
+}
+
+void runPlay(const PlayFlags& flags) {
+  const engine::Game game = gameFlag(flags.game);
+  checkFlags(flags);
+  const engine::GameSetup setup = engine::gameSetup(game);
+  engine::ShotSource source;
+  if (!flags.shots_path.empty()) source = fileSource(flags.shots_path, setup);
+  engine::PlayOptions options;
+  options.noise_scale = flags.noise;
+  options.seed = flags.seed;
+  options.max_shots = flags.max_shots;
+  const engine::PlayedFrame frame = engine::playFrame(setup, options, source);
+  if (!flags.png_dir.empty()) writePictures(setup, frame, flags.png_dir);
+  if (!flags.log_path.empty()) writeLog(frame, flags.log_path);
+  if (!flags.quiet && flags.log_path != "-") printSummary(frame, game);
+}
+
+}  // namespace
+
+void addPlayCommand(CLI::App& parent) {
+  auto flags = std::make_shared<PlayFlags>();
+  CLI::App* command = parent.add_subcommand(
+      "play",
+      "Play a frame of 9-ball, 10-ball, 8-ball or snooker from the break: two players driven by "
+      "the planner, under execution noise (docs/games.md)");
+  command->add_option("game", flags->game, "the game: 9-ball, 10-ball, 8-ball or snooker")
+      ->required();
+  command->add_option("--seed", flags->seed, "seed of the execution noise (default 1)")
+      ->check(unsigned64());
+  command->add_option("--noise", flags->noise,
+                      "execution noise as a multiple of the default sigmas; 0 none (default 1)");
+  command->add_option("--log", flags->log_path,
+                      "write the frame log here as JSON lines (state, shot, outcome, decision); "
+                      "- for standard output")
+      ->check(notEmpty());
+  command->add_option("--shots", flags->shots_path,
+                      "player A's shots, one JSON object per line (the planner plays after the "
+                      "last)")
+      ->check(notEmpty());
+  command->add_option("--png-dir", flags->png_dir, "draw every shot to DIR/shot_NNN.png")
+      ->check(notEmpty());
+  command->add_option("--max-shots", flags->max_shots,
+                      "stop a frame not over after this many shots (default 400)");
+  command->add_flag("--quiet", flags->quiet, "print no summary");
+  command->callback([flags] {
+    if (const int status = runReportingErrors("play", [&] { runPlay(*flags); })) {
+      throw CLI::RuntimeError(status);
+    }
+  });
+}
+
+}  // namespace baize::tools
