@@ -15,6 +15,7 @@ class CsvTable {
 
   const std::string& path() const { return path_; }
   size_t rowCount() const { return rows_.size(); }
+  const std::vector<std::string>& header() const { return header_; }
   // Throws std::invalid_argument naming the file and the columns it has when `name` is missing.
   size_t column(const std::string& name) const;
   // Whether the header has a column `name` (for optional columns).
@@ -22,6 +23,8 @@ class CsvTable {
   const std::string& text(size_t row, size_t column) const { return rows_[row][column]; }
   // The field as a finite number; throws std::invalid_argument naming file, line and column.
   double number(size_t row, size_t column) const;
+  // The line of the file that row `row` came from, for messages.
+  int lineNumber(size_t row) const { return line_numbers_[row]; }
 
  private:
   std::string path_;

@@ -285,6 +285,8 @@ Scene loadScene(const std::string& path) {
 ModelDefaults modelDefaultsFor(const Scene& scene) {
   ModelDefaults defaults;
   defaults.cushion_contact_height_m = scene.table.cushion_contact_height_m;
+  defaults.cushion_restitution = scene.table.cushion_restitution;
+  defaults.cushion_friction = scene.table.cushion_friction;
   if (scene.table.kind == TableKind::Snooker)
     defaults.ball_ball_restitution = 0.89;  // snooker balls (physics-notes section 3)
   return defaults;

@@ -480,10 +480,26 @@ const std::vector<std::string>& pocketNames() {
   return names;
 }
 
+namespace {
+
+// The cushion model's defaults. Their bound against the nose height (mu_w < tan theta) needs the
+// ball's radius: scenes check it where the table meets the ball set.
+void readCushionDefaults(const JsonReader& cushion, Table* table) {
+  cushion.requireExactKeys({"restitution", "friction"});
+  table->cushion_restitution = cushion.positiveNumber("restitution");
+  if (!(table->cushion_restitution >= physics::kMinRestitution && table->cushion_restitution <= 1))
+    cushion.reject("restitution", "it must lie in [" + physics::valueText(physics::kMinRestitution) +
+                                      ", 1] (the energetic coefficient e_e)");
+  table->cushion_friction = cushion.nonNegativeNumber("friction");
+}
+
+}  // namespace
+
 Table tableFromJson(const nlohmann::json& document, const std::string& source) {
   const JsonReader root(document, source);
-  root.requireExactKeys({"name", "kind", "description", "playing_surface",
-                         "cushion_contact_height_m", "corner_pocket", "side_pocket", "markings"});
+  root.requireKeys({"name", "kind", "description", "playing_surface", "cushion_contact_height_m",
+                    "corner_pocket", "side_pocket", "markings"},
+                   {"cushion"});
   Table table;
   table.source = source;
   table.name = root.text("name");
@@ -501,6 +517,7 @@ Table tableFromJson(const nlohmann::json& document, const std::string& source) {
     surface.reject("width_m", "it must be less than length_m (x runs along the long side)");
   }
   table.cushion_contact_height_m = root.positiveNumber("cushion_contact_height_m");
+  if (root.has("cushion")) readCushionDefaults(root.object("cushion"), &table);
 
   const JsonReader corner = root.object("corner_pocket");
   const JsonReader side = root.object("side_pocket");

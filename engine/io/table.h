@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "engine/sim/table_geometry.h"
+#include "physics/cushion_model.h"
 
 namespace baize::engine {
 
@@ -63,6 +64,10 @@ struct Table {
   double length_m = 0;  // playing surface, between the cushion noses
   double width_m = 0;
   double cushion_contact_height_m = 0;  // height of the cushion nose contact above the slate
+  // The cushion model's defaults on this table (the file's optional "cushion" object; without it
+  // the Mathavan 2010 paper's snooker values). A scene's physics.cushion overrides them.
+  double cushion_restitution = physics::CushionParams{}.restitution;  // e_e
+  double cushion_friction = physics::CushionParams{}.cushion_friction;  // mu_w
   PocketSpec corner_pocket, side_pocket;
 
   // Counterclockwise from the bottom-left corner: corner (-x,-y), side (-y), corner (+x,-y),

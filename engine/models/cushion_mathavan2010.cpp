@@ -10,6 +10,8 @@ const std::vector<std::string>& mathavan2010Keys() {
 Mathavan2010Cushion readMathavan2010(const ModelDefaults& defaults, const JsonReader* parameters) {
   Mathavan2010Cushion model;
   model.contact_height_m = defaults.cushion_contact_height_m;
+  model.restitution = defaults.cushion_restitution;
+  model.cushion_friction = defaults.cushion_friction;
   if (!parameters) return model;
   if (parameters->has("restitution")) model.restitution = parameters->finiteNumber("restitution");
   if (parameters->has("friction")) model.cushion_friction = parameters->finiteNumber("friction");

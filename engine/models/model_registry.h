@@ -18,6 +18,7 @@
 
 #include "engine/io/json_reader.h"
 #include "engine/sim/simulation_params.h"
+#include "physics/cushion_model.h"
 
 namespace baize::engine {
 
@@ -25,6 +26,9 @@ namespace baize::engine {
 struct ModelDefaults {
   // The table's cushion nose height above the slate; pool: 0.635 of the ball's diameter.
   double cushion_contact_height_m = 0.635 * 2 * BallProperties{}.radius_m;
+  // The table's cushion restitution e_e and nose friction mu_w (the Mathavan 2010 model's).
+  double cushion_restitution = physics::CushionParams{}.restitution;
+  double cushion_friction = physics::CushionParams{}.cushion_friction;
   // The ball set's ball-ball restitution: pool 0.95, snooker 0.89 (physics-notes section 3).
   double ball_ball_restitution = 0.95;
 };

@@ -10,6 +10,7 @@
 #include "tools/baize/bench_cushion_command.h"
 #include "tools/baize/bench_render_command.h"
 #include "tools/baize/bench_shots_command.h"
+#include "tools/baize/calibrate_command.h"
 #include "tools/baize/chart_command.h"
 #include "tools/baize/check_command.h"
 #include "tools/baize/cli_errors.h"
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1, 1);
 
   addBatchCommand(app);
+  addCalibrateCommand(app);
   addChartCommand(app);
   addCheckCommand(app);
   addCushionCommand(app);

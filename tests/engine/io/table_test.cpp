@@ -509,6 +509,20 @@ TEST_F(BadTableFileTest, NegativeSizeIsNamedWithItsValue) {
   EXPECT_MENTIONS(message, "> 0");
 }
 
+TEST_F(BadTableFileTest, CushionDefaultsAreReadAndChecked) {
+  document["cushion"] = {{"restitution", 0.8}, {"friction", 0.2}};
+  std::ofstream(path) << document.dump(2);
+  const Table table = loadTable(path);
+  EXPECT_EQ(table.cushion_restitution, 0.8);
+  EXPECT_EQ(table.cushion_friction, 0.2);
+  document["cushion"]["restitution"] = 1.5;
+  EXPECT_MENTIONS(loadError(), "cushion.restitution = 1.5");
+  document["cushion"] = {{"restitution", 0.8}, {"friction", -0.1}};
+  EXPECT_MENTIONS(loadError(), "cushion.friction = -0.1");
+  document["cushion"] = {{"restitution", 0.8}};
+  EXPECT_MENTIONS(loadError(), "cushion.friction is missing");
+}
+
 TEST_F(BadTableFileTest, ZeroJawRadiusIsRejected) {
   document["corner_pocket"]["jaw_radius_m"] = 0;
   EXPECT_MENTIONS(loadError(), "corner_pocket.jaw_radius_m = 0");

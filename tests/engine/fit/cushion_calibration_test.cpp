@@ -1,0 +1,180 @@
+#include "engine/fit/cushion_calibration.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "engine/io/table.h"
+#include "physics/cushion_exact_solver.h"
+
+namespace baize::engine {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The rebound the model gives, as a measurement with Gaussian noise of sd `noise_mps` on the speed
+// and `noise_deg` on the angle.
+CushionMeasurement synthetic(const physics::CushionParams& p, double speed, double angle_deg,
+                             double topspin, double sidespin, std::mt19937_64& random,
+                             double noise_mps, double noise_deg) {
+  const double unit = speed / p.radius_m;
+  const auto result = physics::solveCushionImpactExact(
+      p, physics::incomingBall(speed, angle_deg * kPi / 180, topspin * unit, sidespin * unit));
+  std::normal_distribution<double> gauss(0, 1);
+  CushionMeasurement m;
+  m.speed_mps = speed;
+  m.angle_deg = angle_deg;
+  m.topspin_k = topspin;
+  m.sidespin_k = sidespin;
+  m.rebound_speed_mps = std::hypot(result.after.v.x(), result.after.v.y()) + noise_mps * gauss(random);
+  m.rebound_angle_deg =
+      std::atan2(-result.after.v.y(), result.after.v.x()) * 180 / kPi + noise_deg * gauss(random);
+  return m;
+}
+
+physics::CushionParams poolCushion(double e, double mu_w) {
+  physics::CushionParams p = calibrationStart(builtinTable("pool-9ft"), builtinBallSet("pool"));
+  p.restitution = e;
+  p.cushion_friction = mu_w;
+  return p;
+}
+
+std::vector<CushionMeasurement> syntheticSet(const physics::CushionParams& truth, uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::vector<CushionMeasurement> data;
+  for (double angle : {30.0, 50.0, 70.0, 90.0}) {
+    for (double topspin : {0.0, 1.0}) {
+      for (double speed : {0.5, 1.0}) {
+        data.push_back(synthetic(truth, speed, angle, topspin, 0, random, 0.01, 0.5));
+      }
+    }
+  }
+  return data;
+}
+
+// Fitted back from a start away from the truth, within 3 sd, for several noise draws.
+TEST(CushionCalibration, FitsSyntheticDataBackWithinItsUncertainty) {
+  const physics::CushionParams truth = poolCushion(0.8, 0.2);
+  for (uint64_t seed : {1u, 2u, 3u}) {
+    CushionCalibrationSetup setup;
+    setup.start = poolCushion(0.95, 0.1);
+    setup.threads = 2;
+    const CushionCalibration fit = calibrateCushion(syntheticSet(truth, seed), setup);
+    ASSERT_EQ(fit.values.size(), 2);
+    EXPECT_GT(fit.standard_deviation[0], 0);
+    EXPECT_GT(fit.standard_deviation[1], 0);
+    EXPECT_LT(std::abs(fit.values[0] - truth.restitution), 3 * fit.standard_deviation[0]) << seed;
+    EXPECT_LT(std::abs(fit.values[1] - truth.cushion_friction), 3 * fit.standard_deviation[1])
+        << seed;
+    EXPECT_TRUE(fit.separation_problems.empty()) << seed;
+    EXPECT_EQ(fit.points.size(), 16u);
+    EXPECT_EQ(fit.residual_count, 32);
+  }
+}
+
+// Without noise the truth is found to far better than any measurement could give.
+TEST(CushionCalibration, FindsTheTruthFromExactData) {
+  const physics::CushionParams truth = poolCushion(0.75, 0.18);
+  std::mt19937_64 random(7);
+  std::vector<CushionMeasurement> data;
+  for (double angle : {40.0, 90.0}) {
+    for (double topspin : {0.0, 1.0}) data.push_back(synthetic(truth, 1, angle, topspin, 0, random, 0, 0));
+  }
+  CushionCalibrationSetup setup;
+  setup.start = poolCushion(0.98, 0.14);
+  const CushionCalibration fit = calibrateCushion(data, setup);
+  EXPECT_NEAR(fit.values[0], 0.75, 1e-6);
+  EXPECT_NEAR(fit.values[1], 0.18, 1e-6);
+  EXPECT_LT(fit.rms_residual_mps, 1e-7);
+}
+
+// Head-on rolling impacts give one rebound ratio whatever the speed (the model is linear), so e_e
+// and mu_w cannot both be found: the fit says so.
+TEST(CushionCalibration, HeadOnRollingDataDoesNotSeparateRestitutionAndFriction) {
+  const physics::CushionParams truth = poolCushion(0.8, 0.2);
+  std::mt19937_64 random(3);
+  std::vector<CushionMeasurement> data;
+  for (double speed : {0.3, 0.6, 0.9, 1.2}) {
+    data.push_back(synthetic(truth, speed, 90, 1, 0, random, 0.01, 0));
+    data.back().rebound_angle_deg.reset();
+  }
+  CushionCalibrationSetup setup;
+  setup.start = poolCushion(0.95, 0.1);
+  const CushionCalibration fit = calibrateCushion(data, setup);
+  ASSERT_EQ(fit.separation_problems.size(), 1u);
+  EXPECT_NE(fit.separation_problems[0].find("restitution and friction"), std::string::npos)
+      << fit.separation_problems[0];
+}
+
+TEST(CushionCalibration, LeavesOutFastPointsAndCountsThem) {
+  const physics::CushionParams truth = poolCushion(0.8, 0.2);
+  std::vector<CushionMeasurement> data = syntheticSet(truth, 5);
+  data.push_back(data[0]);
+  data.back().speed_mps = 2.0;
+  CushionCalibrationSetup setup;
+  setup.start = truth;
+  const CushionCalibration fit = calibrateCushion(data, setup);
+  EXPECT_EQ(fit.left_out, 1);
+  EXPECT_EQ(fit.points.size(), data.size() - 1);
+}
+
+TEST(CushionCalibration, RefusesFewerValuesThanParameters) {
+  const physics::CushionParams truth = poolCushion(0.8, 0.2);
+  std::mt19937_64 random(1);
+  std::vector<CushionMeasurement> data = {synthetic(truth, 1, 90, 1, 0, random, 0, 0)};
+  data[0].rebound_angle_deg.reset();
+  CushionCalibrationSetup setup;
+  setup.start = truth;
+  try {
+    calibrateCushion(data, setup);
+    FAIL() << "one value fitted two parameters";
+  } catch (const std::invalid_argument& refused) {
+    EXPECT_NE(std::string(refused.what()).find("fewer than the 2 parameters"), std::string::npos)
+        << refused.what();
+  }
+}
+
+// The threads split the impacts; each is solved alone, so the fit is the same to the bit.
+TEST(CushionCalibration, ThreadsDoNotChangeTheResult) {
+  const std::vector<CushionMeasurement> data = syntheticSet(poolCushion(0.8, 0.2), 9);
+  CushionCalibrationSetup setup;
+  setup.start = poolCushion(0.9, 0.15);
+  const CushionCalibration one = calibrateCushion(data, setup);
+  setup.threads = 3;
+  const CushionCalibration three = calibrateCushion(data, setup);
+  EXPECT_EQ(one.values, three.values);
+  EXPECT_EQ(one.standard_deviation, three.standard_deviation);
+}
+
+// The paper's head-on rolling snooker rebounds (assets/measurements) below 1.5 m/s, on the snooker
+// table: with mu_w held at the paper's 0.14 the restitution fitted agrees with its 0.98 within
+// 2 sd; fitting both, the tool says the data cannot separate them.
+TEST(CushionCalibration, ThePapersSnookerDataAgreeWithItsValues) {
+  const auto data = readCushionMeasurements(assetsDirectory() +
+                                            "/measurements/snooker-head-on-rolling.csv");
+  CushionCalibrationSetup setup;
+  setup.start = calibrationStart(builtinTable("snooker-12ft"), builtinBallSet("snooker"));
+  ASSERT_EQ(setup.start.cushion_friction, 0.14);
+  setup.fitted = {CushionFitParameter::Restitution};
+  const CushionCalibration fit = calibrateCushion(data, setup);
+  EXPECT_EQ(fit.points.size(), 7u);
+  EXPECT_EQ(fit.left_out, 9);
+  EXPECT_LT(std::abs(fit.values[0] - 0.98), 2 * fit.standard_deviation[0]);
+  EXPECT_LT(fit.standard_deviation[0], 0.03);  // the data do say something
+  setup.fitted = {CushionFitParameter::Restitution, CushionFitParameter::Friction};
+  EXPECT_EQ(calibrateCushion(data, setup).separation_problems.size(), 1u);
+}
+
+TEST(CushionCalibration, ParameterNamesAreTheSceneKeys) {
+  for (const std::string& name : fitParameterNames()) {
+    ASSERT_TRUE(fitParameterNamed(name)) << name;
+    EXPECT_EQ(fitParameterName(*fitParameterNamed(name)), name);
+  }
+  EXPECT_FALSE(fitParameterNamed("mu_w"));
+}
+
+}  // namespace
+}  // namespace baize::engine

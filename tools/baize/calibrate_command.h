@@ -1,0 +1,14 @@
+// `baize calibrate DATA.csv`: fits the cushion model's parameters to measured impacts
+// (engine/fit/cushion_calibration.h) and reports them with their uncertainties, the residuals and,
+// on request, a chart and a JSON file. See docs/calibrate.md.
+#pragma once
+
+namespace CLI {
+class App;
+}
+
+namespace baize::tools {
+
+void addCalibrateCommand(CLI::App& parent);
+
+}  // namespace baize::tools
