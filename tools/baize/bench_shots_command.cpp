@@ -81,6 +81,38 @@ Timing timeScene(const engine::Scene& scene, int repeat, engine::CushionImpactWo
   return {median(one), two.empty() ? NAN : median(two), events};
 }
 
+struct RandomShotsTiming {
+  double one_core_us = 0;       // median per shot
+  double two_core_wall_us = 0;  // median per shot with the worker (NaN without one)
+  double events = 0;            // median per shot
+  double one_core_total_s = 0;  // all the shots on one core
+};
+
+// Each shot once per pass (its first run: as a user runs it), one core first, then with the
+// worker if there is one.
+RandomShotsTiming timeShots(const std::vector<engine::Scene>& shots,
+                            engine::CushionImpactWorker* worker, WorkerTally* tally) {
+  std::vector<double> one, two, events;
+  RandomShotsTiming timing;
+  for (const engine::Scene& s : shots) {
+    std::size_t count = 0;
+    const double us = timedRun(s, nullptr, &count, tally);
+    one.push_back(us);
+    timing.one_core_total_s += us * 1e-6;
+    events.push_back(static_cast<double>(count));
+  }
+  if (worker) {
+    for (const engine::Scene& s : shots) {
+      std::size_t count = 0;
+      two.push_back(timedRun(s, worker, &count, tally));
+    }
+  }
+  timing.one_core_us = median(one);
+  timing.two_core_wall_us = two.empty() ? NAN : median(two);
+  timing.events = median(events);
+  return timing;
+}
+
 void runBenchShots(const BenchShotsFlags& flags) {
   if (flags.repeat < 1 || flags.repeat > kMaxBenchCount) {
     rejectFlag("--repeat", flags.repeat, kBenchCountAllowed);
@@ -136,29 +168,26 @@ void runBenchShots(const BenchShotsFlags& flags) {
   }
   std::vector<engine::Scene> shots = engine::randomSingleShots(flags.random_shots);
   std::transform(shots.begin(), shots.end(), shots.begin(), withTolerance);
-  for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i)
+  // The same shots with the simple restitution rule at every cushion: what the event loop costs
+  // without the impact model, the yardstick of the full model's cost.
+  std::vector<engine::Scene> simple_shots = shots;
+  for (engine::Scene& s : simple_shots) s.overrides.cushion = nlohmann::json{{"model", "simple"}};
+  for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i) {
     engine::runScene(shots[i]);  // untimed warm-up, as for the scenes
-  // Each shot once per pass (its first run: as a user runs it), one core first.
-  std::vector<double> one, two, events;
-  double one_core_total_s = 0;
-  for (const engine::Scene& s : shots) {
-    std::size_t count = 0;
-    const double us = timedRun(s, nullptr, &count, &tally);
-    one.push_back(us);
-    one_core_total_s += us * 1e-6;
-    events.push_back(static_cast<double>(count));
+    engine::runScene(simple_shots[i]);
   }
-  if (second) {
-    for (const engine::Scene& s : shots) {
-      std::size_t count = 0;
-      two.push_back(timedRun(s, second, &count, &tally));
-    }
-  }
-  table << "random-single-shots," << std::setprecision(4) << median(one) << ','
-        << (two.empty() ? NAN : median(two)) << ',' << median(events) << row_end;
+  const RandomShotsTiming full = timeShots(shots, second, &tally);
+  const RandomShotsTiming simple = timeShots(simple_shots, second, &tally);
+  table << "random-single-shots," << std::setprecision(4) << full.one_core_us << ','
+        << full.two_core_wall_us << ',' << full.events << row_end;
+  table << "random-single-shots-simple," << std::setprecision(4) << simple.one_core_us << ','
+        << simple.two_core_wall_us << ',' << simple.events << row_end;
   std::cout << table.str();
-  std::cout << "random single shots: " << std::setprecision(4) << shots.size() / one_core_total_s
+  std::cout << "random single shots: " << std::setprecision(4) << shots.size() / full.one_core_total_s
             << " shots/s on one core (" << shots.size() << " shots; median events as above)\n";
+  std::cout << "random single shots with the full cushion model / with the simple rule at every cushion: "
+            << std::setprecision(3) << full.one_core_us / simple.one_core_us
+            << "x (one_core_us medians of the same shots in one run)\n";
   if (flags.cushion_tolerance) {
     std::cout << "cushion impacts solved to tolerance " << *flags.cushion_tolerance
               << " (the exact solver's default: " << physics::ExactSolverOptions{}.tolerance
