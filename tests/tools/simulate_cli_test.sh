@@ -61,10 +61,10 @@ for pieces in d["trajectories"].values():
 assert d["trajectories"]["cue"][0]["velocity_mps"][0] > 5, "struck at break speed"
 # The physics echo: the defaults of a pool table, in the scene format's keys.
 p = d["physics"]
-assert p["cushion"]["model"] == "exact" and p["ball_ball"]["model"] == "frictional", p
+assert p["cushion"]["model"] == "tabulated" and p["ball_ball"]["model"] == "frictional", p
 assert p["cloth"]["rolling_friction"] == 0.01 and "squirt_end_mass_kg" not in p["cue"], p
 PY
-grep -q "^models: cushion exact, ball-ball frictional$" <<<"$out" || fail "models line: $out"
+grep -q "^models: cushion tabulated, ball-ball frictional$" <<<"$out" || fail "models line: $out"
 
 # --sample BALL@TIME: the state at that time, as the trajectory's closed form gives it. At 0 the
 # cue ball is where the scene put it, moving as struck (the printed line agrees with the JSON);
