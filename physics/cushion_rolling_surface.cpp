@@ -60,7 +60,8 @@ struct CushionRollingSurface::Cell {
   int depth = 0;
   State state = State::Unbuilt;
   // Per output, coefficients of T_i(x) T_j(y), x and y the cell's variables mapped to [-1, 1].
-  std::array<std::array<double, kNodes * kNodes>, kOutputs> coefficients{};
+  // (empty until built; freed when split or marked)
+  std::vector<std::array<double, kNodes * kNodes>> coefficients;
   std::array<std::unique_ptr<Cell>, 4> children;  // when split: (alpha, sigma) low-low, high-low,
                                                   // low-high, high-high
 
@@ -111,20 +112,9 @@ Outputs exactOutputs(const CushionParams& params, double alpha, double sigma) {
 
 }  // namespace
 
-CushionRollingSurface::CushionRollingSurface(const CushionParams& params) : params_(params) {
+CushionRollingSurface::CushionRollingSurface(const CushionParams& params)
+    : params_(params), roots_(kRootCellsAlpha * kRootCellsSidespin) {
   validateCushionParams(params);
-  const double alpha_step = (kMaxAlpha_rad - kMinAlpha_rad) / kRootCellsAlpha;
-  const double sigma_step = kMaxSidespinRatio / kRootCellsSidespin;
-  for (int s = 0; s < kRootCellsSidespin; ++s) {
-    for (int a = 0; a < kRootCellsAlpha; ++a) {
-      auto cell = std::make_unique<Cell>();
-      cell->alpha0 = kMinAlpha_rad + a * alpha_step;
-      cell->alpha1 = a + 1 == kRootCellsAlpha ? kMaxAlpha_rad : cell->alpha0 + alpha_step;
-      cell->sigma0 = s * sigma_step;
-      cell->sigma1 = s + 1 == kRootCellsSidespin ? kMaxSidespinRatio : cell->sigma0 + sigma_step;
-      roots_.push_back(std::move(cell));
-    }
-  }
 }
 
 CushionRollingSurface::~CushionRollingSurface() = default;
@@ -136,13 +126,24 @@ CushionRollingSurface::Cell& CushionRollingSurface::rootCellAt(double alpha, dou
   };
   const int a = index(alpha, kMinAlpha_rad, kMaxAlpha_rad, kRootCellsAlpha);
   const int s = index(sigma, 0, kMaxSidespinRatio, kRootCellsSidespin);
-  return *roots_[s * kRootCellsAlpha + a];
+  std::unique_ptr<Cell>& root = roots_[s * kRootCellsAlpha + a];
+  if (!root) {  // made when first touched: a parameter set costs only what its impacts reach
+    const double alpha_step = (kMaxAlpha_rad - kMinAlpha_rad) / kRootCellsAlpha;
+    const double sigma_step = kMaxSidespinRatio / kRootCellsSidespin;
+    root = std::make_unique<Cell>();
+    root->alpha0 = kMinAlpha_rad + a * alpha_step;
+    root->alpha1 = a + 1 == kRootCellsAlpha ? kMaxAlpha_rad : root->alpha0 + alpha_step;
+    root->sigma0 = s * sigma_step;
+    root->sigma1 = s + 1 == kRootCellsSidespin ? kMaxSidespinRatio : root->sigma0 + sigma_step;
+  }
+  return *root;
 }
 
 void CushionRollingSurface::build(Cell* cell) {
   const auto start = std::chrono::steady_clock::now();
   // Values at the nodes, then the coefficients (the discrete Chebyshev transform in each variable).
   std::array<std::array<Outputs, kNodes>, kNodes> values;
+  cell->coefficients.resize(kOutputs);
   for (int k = 0; k < kNodes; ++k)
     for (int l = 0; l < kNodes; ++l)
       values[k][l] = exactOutputs(params_, cell->alphaAt(nodePoint(k)), cell->sigmaAt(nodePoint(l)));
@@ -187,6 +188,7 @@ void CushionRollingSurface::build(Cell* cell) {
     ++stats_.cells_kept;
   } else if (cell->depth < kMaxDepth) {
     cell->state = Cell::State::Split;
+    cell->coefficients = {};
     const double alpha_mid = 0.5 * (cell->alpha0 + cell->alpha1);
     const double sigma_mid = 0.5 * (cell->sigma0 + cell->sigma1);
     for (int c = 0; c < 4; ++c) {
@@ -200,6 +202,7 @@ void CushionRollingSurface::build(Cell* cell) {
     }
   } else {
     cell->state = Cell::State::Exact;
+    cell->coefficients = {};
     ++stats_.cells_to_exact;
   }
   stats_.build_seconds +=
