@@ -81,7 +81,9 @@ shots = {r["scene"]: r for r in csv.DictReader(open(f"{work}/shots.csv"))}
 shot_lines = text(f"{work}/shots.txt")
 rate = next(l for l in shot_lines if l.startswith("random single shots:"))
 per_core = rate.split(":")[1].split("shots/s")[0].strip()
-headline = (f"Random single shots: {float(per_core):,.0f} per second on one core; "
+ratio = float(shots["random-single-shots"]["one_core_us"]) / float(shots["random-single-shots-simple"]["one_core_us"])
+headline = (f"Random single shots: {float(per_core):,.0f} per second on one core "
+            f"(full cushion model {ratio:.2f}x the simple rule's time); "
             f"9-ball break: {float(shots['9-ball-break']['one_core_us']):.0f} us on one core "
             f"([docs/benchmarks.md](docs/benchmarks.md)).")
 now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")

@@ -23,15 +23,26 @@ nlohmann::json ExactCushionModel::parametersJson() const {
   return out;
 }
 
+const std::vector<std::string>& exactSolverKeys() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k = mathavan2010Keys();
+    k.push_back("tolerance");
+    return k;
+  }();
+  return keys;
+}
+
+physics::ExactSolverOptions readExactSolverOptions(const JsonReader* parameters) {
+  physics::ExactSolverOptions solver;
+  if (parameters && parameters->has("tolerance"))
+    solver.tolerance = parameters->finiteNumber("tolerance");
+  return solver;
+}
+
 ModelEntry<CushionContactModel> exactCushionModel() {
-  std::vector<std::string> keys = mathavan2010Keys();
-  keys.push_back("tolerance");
-  return {"exact", keys, [](const ModelDefaults& defaults, const JsonReader* parameters) {
-            physics::ExactSolverOptions solver;
-            if (parameters && parameters->has("tolerance"))
-              solver.tolerance = parameters->finiteNumber("tolerance");
+  return {"exact", exactSolverKeys(), [](const ModelDefaults& defaults, const JsonReader* parameters) {
             return std::make_shared<const ExactCushionModel>(readMathavan2010(defaults, parameters),
-                                                             solver);
+                                                             readExactSolverOptions(parameters));
           }};
 }
 

@@ -8,7 +8,7 @@
 
 namespace baize::engine {
 
-class ExactCushionModel final : public CushionContactModel {
+class ExactCushionModel : public CushionContactModel {
  public:
   ExactCushionModel(const Mathavan2010Cushion& model, const physics::ExactSolverOptions& solver)
       : model_(model), solver_(solver) {}
@@ -21,6 +21,10 @@ class ExactCushionModel final : public CushionContactModel {
   RigidCushionContact rigidContact(const SimulationParams& shot) const override;
   nlohmann::json parametersJson() const override;
 
+ protected:
+  const Mathavan2010Cushion& model() const { return model_; }
+  const physics::ExactSolverOptions& solver() const { return solver_; }
+
  private:
   Mathavan2010Cushion model_;
   physics::ExactSolverOptions solver_;
@@ -28,5 +32,9 @@ class ExactCushionModel final : public CushionContactModel {
 
 // The registration: keys restitution, friction, contact_height_m, tolerance (the solver's).
 ModelEntry<CushionContactModel> exactCushionModel();
+
+// The keys of the models solved by the exact solver, and their reading into one of them.
+const std::vector<std::string>& exactSolverKeys();
+physics::ExactSolverOptions readExactSolverOptions(const JsonReader* parameters);
 
 }  // namespace baize::engine

@@ -8,6 +8,7 @@
 #include "engine/models/cushion_exact_model.h"
 #include "engine/models/cushion_paper_model.h"
 #include "engine/models/cushion_simple_model.h"
+#include "engine/models/cushion_tabulated_model.h"
 
 namespace baize::engine {
 namespace {
@@ -123,10 +124,11 @@ template class ModelRegistry<BallBallContactModel>;
 
 ModelRegistry<CushionContactModel>& cushionModels() {
   static ModelRegistry<CushionContactModel> registry = [] {
-    ModelRegistry<CushionContactModel> models("cushion", "exact");
+    ModelRegistry<CushionContactModel> models("cushion", "tabulated");
     models.add(exactCushionModel());
     models.add(paperCushionModel());
     models.add(simpleCushionModel());
+    models.add(tabulatedCushionModel());
     return models;
   }();
   return registry;

@@ -353,14 +353,7 @@ void expectDefaultToleranceWithin(const CushionParams& p, const BallVelocity& in
   EXPECT_LE(kineticEnergy(p, r.after), kineticEnergy(p, in));
 }
 
-CushionParams poolTableCushion() {
-  CushionParams p;
-  p.mass_kg = 0.17;
-  p.radius_m = 0.028575;
-  p.contact_height_m = 0.03629;
-  p.cloth_friction = 0.2;
-  return p;
-}
+using test::poolTableCushion;
 
 // Regression (found measuring the bench on the pool cushion): a rolling ball with heavy sidespin
 // whose nose slip passes close by zero and grows again. While that slip was below the regularizing

@@ -20,6 +20,16 @@ namespace baize::physics::test {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double degrees(double angle_deg) { return angle_deg * kPi / 180.0; }
 
+// The 9 ft pool table's cushion and balls (0.17 kg, 57.15 mm, nose at 36.29 mm, mu_s 0.2).
+inline CushionParams poolTableCushion() {
+  CushionParams p;
+  p.mass_kg = 0.17;
+  p.radius_m = 0.028575;
+  p.contact_height_m = 0.03629;
+  p.cloth_friction = 0.2;
+  return p;
+}
+
 // Largest difference between two ball states, as a speed (m/s): centre velocity components, and
 // angular velocity components times the radius (the surface speed they cause).
 inline double velocityDifference(const BallVelocity& a, const BallVelocity& b, double radius_m) {

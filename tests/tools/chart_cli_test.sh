@@ -133,7 +133,7 @@ grep -qxF "wrote $work/bench.png" "$work/out" || fail "no 'wrote' line for the b
 check_png 960 600 "$work/bench.png"
 "$baize" chart bench-cushion "$work/bench.csv" --png "$work/bench-small.png" --width 480 \
   --height 320 >/dev/null || fail "chart bench-cushion --width 480 exited $?"
-count_palette_colours 2 "$work/bench-small.png"  # paper and exact
+count_palette_colours 3 "$work/bench-small.png"  # paper, exact and tabulated
 # The same file with CRLF line ends (from Windows) draws the same chart.
 sed 's/$/\r/' "$work/bench.csv" >"$work/bench-crlf.csv"
 "$baize" chart bench-cushion "$work/bench-crlf.csv" --png "$work/bench-crlf.png" --width 480 \

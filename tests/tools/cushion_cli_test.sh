@@ -252,8 +252,8 @@ assert lines[0] == "solver,setting,median_ns,max_error", lines[0]
 table = rows(sys.argv[1])
 assert [(r["solver"], r["setting"]) for r in table] == [
     ("paper", "N=100"), ("paper", "N=1000"), ("paper", "N=5000"), ("paper", "N=50000"),
-    ("exact", "default"), ("exact", "tol=1e-06"), ("exact", "tol=1e-08"), ("exact", "tol=1e-10"),
-    ("exact", "tol=1e-12")], table
+    ("exact", "default"), ("tabulated", "default"), ("exact", "tol=1e-06"), ("exact", "tol=1e-08"),
+    ("exact", "tol=1e-10"), ("exact", "tol=1e-12")], table
 error = {r["solver"] + " " + r["setting"]: float(r["max_error"]) for r in table}
 assert all(float(r["median_ns"]) > 0 for r in table)
 # The paper scheme is first order: 500 times the steps cut its error by well over 50.
@@ -265,6 +265,8 @@ assert paper[3] < paper[0] / 50, paper
 assert error["exact default"] <= 1e-9, error
 assert error["exact tol=1e-12"] < error["exact tol=1e-08"] < error["exact tol=1e-06"], error
 assert error["exact default"] < paper[3], error
+# The default path keeps its promise (1e-8 V0).
+assert error["tabulated default"] <= 1e-8, error
 # The stdout table is the CSV.
 with open(sys.argv[2]) as f:
     printed = f.read()

@@ -61,10 +61,10 @@ for pieces in d["trajectories"].values():
 assert d["trajectories"]["cue"][0]["velocity_mps"][0] > 5, "struck at break speed"
 # The physics echo: the defaults of a pool table, in the scene format's keys.
 p = d["physics"]
-assert p["cushion"]["model"] == "exact" and p["ball_ball"]["model"] == "frictional", p
+assert p["cushion"]["model"] == "tabulated" and p["ball_ball"]["model"] == "frictional", p
 assert p["cloth"]["rolling_friction"] == 0.01 and "squirt_end_mass_kg" not in p["cue"], p
 PY
-grep -q "^models: cushion exact, ball-ball frictional$" <<<"$out" || fail "models line: $out"
+grep -q "^models: cushion tabulated, ball-ball frictional$" <<<"$out" || fail "models line: $out"
 
 # --sample BALL@TIME: the state at that time, as the trajectory's closed form gives it. At 0 the
 # cue ball is where the scene put it, moving as struck (the printed line agrees with the JSON);
@@ -203,18 +203,24 @@ done
 set --
 
 # baize bench shots, smoke size: one row per shipped scene plus the random set, the CSV as printed.
-"$baize" bench shots --repeat 1 --random-shots 20 --csv "$work/shots.csv" >/dev/null ||
+out=$("$baize" bench shots --repeat 1 --random-shots 20 --csv "$work/shots.csv") ||
   fail "bench shots exited $?"
-python3 - "$work/shots.csv" "$root/assets/scenes" <<'PY'
+# The full cushion model's time over the simple rule's on the same shots, as the two rows give it.
+ratio=$(grep -oP "^random single shots with the full cushion model / with the simple rule at every cushion: \K[0-9.e+]+(?=x)" <<<"$out") ||
+  fail "no ratio line in: $out"
+python3 - "$work/shots.csv" "$root/assets/scenes" "$ratio" <<'PY'
 import csv, os, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 assert list(rows[0]) == ["scene", "one_core_us", "two_core_wall_us", "events"], list(rows[0])
 scenes = sorted(f[:-5] for f in os.listdir(sys.argv[2]) if f.endswith(".json"))
-assert [r["scene"] for r in rows] == scenes + ["random-single-shots"], [r["scene"] for r in rows]
+assert [r["scene"] for r in rows] == scenes + ["random-single-shots", "random-single-shots-simple"], [r["scene"] for r in rows]
 assert all(float(r["one_core_us"]) > 0 and float(r["events"]) >= 1 for r in rows), rows
 # Two cores where a second core is there to hand over, "nan" (and said so) where it is not.
 two = [float(r["two_core_wall_us"]) for r in rows]
 assert all(t > 0 for t in two) or all(t != t for t in two), two
+by_scene = {r["scene"]: float(r["one_core_us"]) for r in rows}
+ratio = by_scene["random-single-shots"] / by_scene["random-single-shots-simple"]
+assert abs(ratio / float(sys.argv[3]) - 1) < 1e-2, (ratio, sys.argv[3])
 PY
 # --cushion-tolerance: the runs use it and say so; a value outside the solver's range is refused
 # (exit 2, the flag named, nothing written).

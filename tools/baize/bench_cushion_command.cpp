@@ -256,6 +256,14 @@ void runBench(const BenchFlags& flags) {
   printRatio("accuracy ratio (paper N=5000 max_error / exact default max_error)",
              paper.max_error / exact.max_error, targets ? kAccuracyTarget : 0);
   printPromise(exact, static_cast<int>(inputs.size()));
+  const BenchRow& tabulated = rowLabelled(report, SolverKind::Tabulated, "default");
+  const bool kept = tabulated.max_error <= kTabulatedPromise;
+  std::cout << "tabulated default (the default path): " << tabulated.table_answers << " of "
+            << inputs.size() << " impacts answered from the table, the rest solved exactly; "
+            << std::setprecision(3) << tabulated.median_ns << " ns median; largest error "
+            << tabulated.max_error << " V0, 99.9th percentile " << tabulated.p999_error
+            << " V0; promised " << exponentText(kTabulatedPromise) << " V0 ("
+            << (kept ? "kept" : "NOT kept") << ")\n";
 
   if (csv) {
     csv->stream() << header << '\n';

@@ -14,7 +14,9 @@
 #include "engine/io/scene.h"
 #include "engine/play/random_shots.h"
 #include "engine/sim/cushion_impact_worker.h"
+#include "engine/models/cushion_mathavan2010.h"
 #include "physics/cushion_exact_solver.h"
+#include "physics/cushion_rolling_surface.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/median.h"
@@ -81,6 +83,48 @@ Timing timeScene(const engine::Scene& scene, int repeat, engine::CushionImpactWo
   return {median(one), two.empty() ? NAN : median(two), events};
 }
 
+// The build so far of the rolling balls' table of the shots' cushion (random shots share one).
+physics::RollingSurfaceStats rollingTableStats(const std::vector<engine::Scene>& shots) {
+  if (shots.empty()) return {};
+  return physics::rollingSurfaceFor(
+             engine::impactParams(
+                 engine::readMathavan2010(engine::modelDefaultsFor(shots[0]), nullptr),
+                 engine::simulationParamsFor(shots[0])))
+      .stats();
+}
+
+struct RandomShotsTiming {
+  double one_core_us = 0;       // median per shot
+  double two_core_wall_us = 0;  // median per shot with the worker (NaN without one)
+  double events = 0;            // median per shot
+  double one_core_total_s = 0;  // all the shots on one core
+};
+
+// Each shot once per pass (its first run: as a user runs it), one core first, then with the
+// worker if there is one.
+RandomShotsTiming timeShots(const std::vector<engine::Scene>& shots,
+                            engine::CushionImpactWorker* worker, WorkerTally* tally) {
+  std::vector<double> one, two, events;
+  RandomShotsTiming timing;
+  for (const engine::Scene& s : shots) {
+    std::size_t count = 0;
+    const double us = timedRun(s, nullptr, &count, tally);
+    one.push_back(us);
+    timing.one_core_total_s += us * 1e-6;
+    events.push_back(static_cast<double>(count));
+  }
+  if (worker) {
+    for (const engine::Scene& s : shots) {
+      std::size_t count = 0;
+      two.push_back(timedRun(s, worker, &count, tally));
+    }
+  }
+  timing.one_core_us = median(one);
+  timing.two_core_wall_us = two.empty() ? NAN : median(two);
+  timing.events = median(events);
+  return timing;
+}
+
 void runBenchShots(const BenchShotsFlags& flags) {
   if (flags.repeat < 1 || flags.repeat > kMaxBenchCount) {
     rejectFlag("--repeat", flags.repeat, kBenchCountAllowed);
@@ -99,13 +143,17 @@ void runBenchShots(const BenchShotsFlags& flags) {
   }
   // The scenes and random shots, with the tolerance asked for.
   const auto withTolerance = [&](engine::Scene scene) {
-    // The tolerance is the exact model's: a scene that chose another model keeps it.
+    // The tolerance is the exact solver's: a scene on the exact solver ("exact", or "tabulated",
+    // which then gives every impact to it) gets it; one that chose another model keeps it.
     if (flags.cushion_tolerance) {
       nlohmann::json& cushion = scene.overrides.cushion
                                     ? *scene.overrides.cushion
                                     : scene.overrides.cushion.emplace(nlohmann::json::object());
-      if (cushion.value("model", engine::cushionModels().defaultName()) == "exact")
+      const std::string model = cushion.value("model", engine::cushionModels().defaultName());
+      if (model == "exact" || model == "tabulated") {
+        cushion["model"] = "exact";
         cushion["tolerance"] = *flags.cushion_tolerance;
+      }
     }
     return scene;
   };
@@ -136,29 +184,37 @@ void runBenchShots(const BenchShotsFlags& flags) {
   }
   std::vector<engine::Scene> shots = engine::randomSingleShots(flags.random_shots);
   std::transform(shots.begin(), shots.end(), shots.begin(), withTolerance);
+  // The same shots with the simple restitution rule at every cushion: what the event loop costs
+  // without the impact model, the yardstick of the full model's cost.
+  std::vector<engine::Scene> simple_shots = shots;
+  for (engine::Scene& s : simple_shots) s.overrides.cushion = nlohmann::json{{"model", "simple"}};
   for (std::size_t i = 0; i < std::min<std::size_t>(shots.size(), kWarmUpShots); ++i)
-    engine::runScene(shots[i]);  // untimed warm-up, as for the scenes
-  // Each shot once per pass (its first run: as a user runs it), one core first.
-  std::vector<double> one, two, events;
-  double one_core_total_s = 0;
-  for (const engine::Scene& s : shots) {
-    std::size_t count = 0;
-    const double us = timedRun(s, nullptr, &count, &tally);
-    one.push_back(us);
-    one_core_total_s += us * 1e-6;
-    events.push_back(static_cast<double>(count));
-  }
-  if (second) {
-    for (const engine::Scene& s : shots) {
-      std::size_t count = 0;
-      two.push_back(timedRun(s, second, &count, &tally));
-    }
-  }
-  table << "random-single-shots," << std::setprecision(4) << median(one) << ','
-        << (two.empty() ? NAN : median(two)) << ',' << median(events) << row_end;
+    engine::runScene(simple_shots[i]);  // untimed warm-up, as for the scenes
+  // The full model's untimed pass runs every shot: it builds the cells of the rolling balls' table
+  // (physics/cushion_rolling_surface.h) that the shots touch, a cost paid once per parameter set
+  // and process, reported here beside the per-shot times it leaves out.
+  const auto build_start = std::chrono::steady_clock::now();
+  for (const engine::Scene& s : shots) engine::runScene(s);
+  const double warm_up_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  const RandomShotsTiming full = timeShots(shots, second, &tally);
+  const RandomShotsTiming simple = timeShots(simple_shots, second, &tally);
+  table << "random-single-shots," << std::setprecision(4) << full.one_core_us << ','
+        << full.two_core_wall_us << ',' << full.events << row_end;
+  table << "random-single-shots-simple," << std::setprecision(4) << simple.one_core_us << ','
+        << simple.two_core_wall_us << ',' << simple.events << row_end;
   std::cout << table.str();
-  std::cout << "random single shots: " << std::setprecision(4) << shots.size() / one_core_total_s
+  std::cout << "random single shots: " << std::setprecision(4) << shots.size() / full.one_core_total_s
             << " shots/s on one core (" << shots.size() << " shots; median events as above)\n";
+  std::cout << "random single shots with the full cushion model / with the simple rule at every cushion: "
+            << std::setprecision(3) << full.one_core_us / simple.one_core_us
+            << "x (one_core_us medians of the same shots in one run)\n";
+  const physics::RollingSurfaceStats built = rollingTableStats(shots);
+  std::cout << "rolling balls' cushion table: " << built.cells_kept << " cells kept of "
+            << built.cells_built << " built from " << built.exact_solves
+            << " exact solutions in " << std::setprecision(3) << built.build_seconds
+            << " s, once per process and parameter set (the untimed pass over the shots: "
+            << warm_up_s << " s)\n";
   if (flags.cushion_tolerance) {
     std::cout << "cushion impacts solved to tolerance " << *flags.cushion_tolerance
               << " (the exact solver's default: " << physics::ExactSolverOptions{}.tolerance

@@ -47,11 +47,16 @@ constexpr double kExactPromise = 1e-9;
 // The share of the promise whose count the bench reports besides the promise's own: how close to it
 // the impacts come.
 constexpr double kHalfPromiseShare = 0.5;
+// The tabulated path's promise: each outgoing velocity within this of the converged solution, in
+// units of V0 (physics/cushion_rolling_surface.h).
+constexpr double kTabulatedPromise = 1e-8;
 
 struct BenchRow {
   SolverSetting setting;
   double median_ns = 0;  // median over the wide set's impacts of the time per impact, ns
   double max_error = 0;  // as defined above, dimensionless
+  double p999_error = 0;  // the 99.9th percentile of the impacts' errors
+  int table_answers = 0;  // the tabulated path: impacts answered from the table
   // Over every impact scored: the rate evaluations (exact solver) or steps (paper scheme) per
   // impact, and how many impacts lie above half the promise and above it.
   double evaluations_per_impact = 0;

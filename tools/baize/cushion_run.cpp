@@ -3,13 +3,25 @@
 #include <cmath>
 #include <sstream>
 
+#include "physics/cushion_tabulated_solver.h"
+
 namespace baize::tools {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadiansPerDegree = kPi / 180.0;
 }  // namespace
 
-std::string solverName(SolverKind kind) { return kind == SolverKind::Paper ? "paper" : "exact"; }
+std::string solverName(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::Paper:
+      return "paper";
+    case SolverKind::Exact:
+      return "exact";
+    case SolverKind::Tabulated:
+      return "tabulated";
+  }
+  return "unknown";
+}
 
 std::string settingLabel(const SolverSetting& setting) {
   if (setting.kind == SolverKind::Paper) return "N=" + std::to_string(setting.paper_steps);
@@ -40,6 +52,8 @@ physics::CushionImpactResult solveCushionShot(const physics::CushionParams& para
     const double impact_scale_Ns = (1 + params.restitution) * params.mass_kg * incoming.v.y();
     options.trace_spacing_Ns = impact_scale_Ns / kTraceSamples;
   }
+  if (setting.kind == SolverKind::Tabulated)
+    return physics::solveCushionImpactTabulated(params, incoming, options);
   return physics::solveCushionImpactExact(params, incoming, options);
 }
 

@@ -12,7 +12,9 @@
 
 namespace baize::tools {
 
-enum class SolverKind { Paper, Exact };
+// Tabulated: the default path (physics/cushion_tabulated_solver.h), its exact solver at
+// exact_tolerance.
+enum class SolverKind { Paper, Exact, Tabulated };
 
 struct SolverSetting {
   SolverKind kind = SolverKind::Exact;
@@ -20,9 +22,10 @@ struct SolverSetting {
   double exact_tolerance = physics::ExactSolverOptions{}.tolerance;  // exact solver only
 };
 
-// "paper" or "exact".
+// "paper", "exact" or "tabulated".
 std::string solverName(SolverKind kind);
-// "N=5000" for the paper solver; "default" for the exact solver at its default tolerance,
+// "N=5000" for the paper solver; "default" for the exact solver (or the table) at its default
+// tolerance,
 // otherwise "tol=1e-08".
 std::string settingLabel(const SolverSetting& setting);
 

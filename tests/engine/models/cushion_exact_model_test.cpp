@@ -17,7 +17,7 @@ TEST(CushionExactModel, GivesTheSolversResultWithTheShotsBallAndCloth) {
   SimulationParams p = poolSimulationParams();
   p.ball.mass_kg = 0.16;
   p.cloth.sliding_friction = 0.25;
-  p.cushion = cushionModel({{"restitution", 0.95}, {"tolerance", 1e-12}});
+  p.cushion = cushionModel({{"model", "exact"}, {"restitution", 0.95}, {"tolerance", 1e-12}});
   const BallVelocity in = physics::incomingBall(1.7, 0.9, 40, -25);
   physics::CushionParams direct_params;
   direct_params.mass_kg = 0.16;
@@ -36,7 +36,7 @@ TEST(CushionExactModel, GivesTheSolversResultWithTheShotsBallAndCloth) {
 }
 
 TEST(CushionExactModel, EchoesEveryParameterUnderItsSceneKey) {
-  const auto model = cushionModel({{"friction", 0.12}, {"contact_height_m", 0.04}});
+  const auto model = cushionModel({{"model", "exact"}, {"friction", 0.12}, {"contact_height_m", 0.04}});
   const nlohmann::json expected = {{"model", "exact"},
                                    {"restitution", 0.98},
                                    {"friction", 0.12},
@@ -48,7 +48,7 @@ TEST(CushionExactModel, EchoesEveryParameterUnderItsSceneKey) {
 
 TEST(CushionExactModel, ATolerancesOutOfRangeIsRefused) {
   SimulationParams p = poolSimulationParams();
-  p.cushion = cushionModel({{"tolerance", 0.5}});
+  p.cushion = cushionModel({{"model", "exact"}, {"tolerance", 0.5}});
   EXPECT_MENTIONS(invalidArgumentMessage([&] { p.cushion->validate(p); }),
                   "exact solver tolerance = 0.5");
 }

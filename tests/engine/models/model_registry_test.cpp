@@ -89,11 +89,11 @@ TEST(ModelRegistry, AToyCushionModelRegisteredInATestRunsAScene) {
 
 TEST(ModelRegistry, ListsTheBuiltInModelsByTheirSceneNames) {
   const std::vector<std::string> cushions = cushionModels().names();
-  EXPECT_EQ(std::vector<std::string>(cushions.begin(), cushions.begin() + 3),
-            (std::vector<std::string>{"exact", "paper", "simple"}));
+  EXPECT_EQ(std::vector<std::string>(cushions.begin(), cushions.begin() + 4),
+            (std::vector<std::string>{"exact", "paper", "simple", "tabulated"}));
   EXPECT_EQ(ballBallModels().names(), (std::vector<std::string>{"frictional", "mathavan2014"}));
-  EXPECT_EQ(cushionModels().defaultName(), "exact");
-  EXPECT_STREQ(poolSimulationParams().cushion->name(), "exact");
+  EXPECT_EQ(cushionModels().defaultName(), "tabulated");
+  EXPECT_STREQ(poolSimulationParams().cushion->name(), "tabulated");
   EXPECT_STREQ(poolSimulationParams().ball_ball->name(), "frictional");
 }
 
@@ -116,7 +116,7 @@ TEST(ModelRegistry, AKeyOfAnotherModelNamesTheModelsThatReadIt) {
   const std::string message = invalidArgumentMessage([] {
     cushionModel({{"model", "simple"}, {"restitution", 0.9}});
   });
-  EXPECT_MENTIONS(message, "it applies only to model \"exact\" or \"paper\"");
+  EXPECT_MENTIONS(message, "it applies only to model \"exact\", \"paper\" or \"tabulated\"");
   EXPECT_MENTIONS(message, "model \"simple\" takes simple_restitution");
   EXPECT_MENTIONS(message, "(the model here is \"simple\")");
 }

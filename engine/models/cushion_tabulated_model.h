@@ -1,0 +1,24 @@
+// Cushion model "tabulated", the default: the Mathavan 2010 model as "exact" solves it, with the
+// impacts of rolling balls answered from the parameter set's table of exact solutions
+// (physics/cushion_rolling_surface.h; within 1e-8 V0 of the exact solver) and every other impact
+// solved by the exact solver.
+#pragma once
+
+#include "engine/models/cushion_exact_model.h"
+
+namespace baize::engine {
+
+class TabulatedCushionModel final : public ExactCushionModel {
+ public:
+  using ExactCushionModel::ExactCushionModel;
+
+  const char* name() const override { return "tabulated"; }
+  physics::BallVelocity resolve(const SimulationParams& shot,
+                                const physics::BallVelocity& incoming) const override;
+};
+
+// The registration: the keys of "exact"; tolerance is the exact solver's, for the impacts the
+// table does not answer.
+ModelEntry<CushionContactModel> tabulatedCushionModel();
+
+}  // namespace baize::engine
