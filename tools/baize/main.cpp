@@ -8,6 +8,7 @@
 #include "tools/baize/batch_command.h"
 #include "tools/baize/bench_accuracy_command.h"
 #include "tools/baize/bench_cushion_command.h"
+#include "tools/baize/bench_play_command.h"
 #include "tools/baize/bench_render_command.h"
 #include "tools/baize/bench_shots_command.h"
 #include "tools/baize/chart_command.h"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   addBenchShotsCommand(*bench);
   addBenchAccuracyCommand(*bench);
   addBenchRenderCommand(*bench);
+  addBenchPlayCommand(*bench);
 
   app.set_version_flag("--version", std::string("baize ") + BAIZE_VERSION);
   app.footer("Run 'baize help COMMAND' (or 'baize COMMAND --help') for a command's flags.");
