@@ -24,8 +24,8 @@ struct PlayerOptions {
 // The value of a shot that keeps the table: this share for keeping it, the rest for the ease of
 // the next pot it leaves.
 constexpr double kKeepShare = 0.6;
-// A safety is worth this share of the opponent's difficulty (1 - their best ease): the player
-// prefers a pot kept with at least about this probability.
+// A legal safety is worth this share of the opponent's difficulty (1 - their best ease); a pot
+// whose sampled value reaches it is played without trying safeties.
 constexpr double kSafetyShare = 0.4;
 
 // The shot the player chooses; deterministic for `seed`.
