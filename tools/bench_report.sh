@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs Baize's benchmarks and writes one report: the machine, the date and commit, and every table
-# (whole shots, accuracy against run time, the cushion solvers, rendering) with its charts. The
+# (whole shots, accuracy against run time, the cushion solvers, rendering, game play) with its
+# charts. The
 # README's headline line is taken from it. Every measured figure in the docs comes from here.
 #
 # Usage: tools/bench_report.sh [--quick] [--baize PATH] [--out FILE] [--images DIR] [--readme FILE]
@@ -38,9 +39,11 @@ fi
 if [[ $quick -eq 1 ]]; then
   shots_flags=(--repeat 1 --random-shots 30) accuracy_flags=(--shots 2 --repeat 1)
   cushion_flags=(--impacts 30 --repeat 1) render_flags=(--repeat 1 --width 320 --height 160)
+  pool_play_flags=(--racks 2 --noise 1) snooker_play_flags=(--racks 1 --noise 1)
 else
   shots_flags=(--repeat 21 --random-shots 3000) accuracy_flags=()
   cushion_flags=() render_flags=()
+  pool_play_flags=(--racks 200 --noise 0.5,1,2) snooker_play_flags=(--racks 20 --noise 0.5,1)
 fi
 
 work=$(mktemp -d)
@@ -55,6 +58,9 @@ progress "cushion solvers"
 "$baize" bench cushion "${cushion_flags[@]}" --csv "$work/cushion.csv" > "$work/cushion.txt"
 progress "rendering"
 GALLIUM_DRIVER=llvmpipe "$baize" bench render "${render_flags[@]}" > "$work/render.txt"
+progress "game play"
+"$baize" bench play --game 9-ball "${pool_play_flags[@]}" --csv "$work/play-9-ball.csv" > /dev/null
+"$baize" bench play --game snooker "${snooker_play_flags[@]}" --csv "$work/play-snooker.csv" > /dev/null
 "$baize" chart bench-accuracy "$work/accuracy.csv" --png "$work/bench-accuracy.png" >/dev/null
 "$baize" chart bench-cushion "$work/cushion.csv" --png "$work/bench-cushion.png" >/dev/null
 
@@ -127,7 +133,22 @@ doc = [
     "",
     "## Rendering (`baize bench render`)",
     "",
-] + [f"    {l}" for l in text(f"{work}/render.txt")] + [""]
+] + [f"    {l}" for l in text(f"{work}/render.txt")] + [
+    "",
+    "## Game play (`baize bench play`)",
+    "",
+    "Frames between two game players from the break, frame r with seed 1 + r, at execution noise",
+    "scales (multiples of the default sigmas). 9-ball: `break_and_run`, the breaker wins without the",
+    "opponent playing; `first_visit_run_out`, the player of the first shot after the break clears",
+    "the table in that visit (95 % Wilson intervals). Snooker: the mean break over scoring visits",
+    "(95 % interval). `ms_per_shot`: the median time of one shot, the player's decision and its",
+    "stroke, on one core.",
+    "",
+    table(f"{work}/play-9-ball.csv"),
+    "",
+    table(f"{work}/play-snooker.csv"),
+    "",
+]
 open(out, "w").write("\n".join(doc))
 open(out + ".headline", "w").write(headline + "\n")
 PY

@@ -92,4 +92,32 @@ if [ "$status" -ne 0 ]; then
   grep -qF "twice.jsonl line 2" "$work/err.txt" || fail "the refusal does not name line 2: $(cat "$work/err.txt")"
   [ ! -e "$work/twice-log.jsonl" ] || fail "a refused file left a log"
 fi
+# bench play: a tiny run writes its CSV; bad flags exit 2 and write nothing.
+"$baize" bench play --racks 1 --noise 0,1 --csv "$work/bench.csv" > "$work/bench.txt"
+[ "$(wc -l < "$work/bench.csv")" -eq 3 ] || fail "bench play --csv has not a header and two rows"
+grep -q "^9-ball noise 1.00: 1 frames, 1 finished, break and run" "$work/bench.txt" || fail "bench play output: $(cat "$work/bench.txt")"
+for bad in "--game straight-pool" "--noise 1,x" "--noise -1" "--racks 0"; do
+  status=0
+  # shellcheck disable=SC2086
+  "$baize" bench play $bad --csv "$work/bad.csv" > /dev/null 2> "$work/err.txt" || status=$?
+  [ "$status" -eq 2 ] || fail "bench play $bad exited $status"
+  grep -qF -- "${bad%% *}" "$work/err.txt" || fail "bench play $bad: the flag is not named: $(cat "$work/err.txt")"
+  [ ! -e "$work/bad.csv" ] || fail "bench play $bad wrote a CSV"
+done
+# The examples of docs/games.md's "Playing a frame" run as written (into the work folder).
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+python3 - "$root/docs/games.md" > "$work/examples.sh" <<'PY'
+import re, sys
+section = open(sys.argv[1]).read().split("## Playing a frame", 1)[1].split("\n## ", 1)[0]
+commands = [l for b in re.findall(r"```sh\n(.*?)```", section, re.S) for l in b.splitlines()]
+assert len(commands) == 3 and all(c.startswith("build/baize play ") for c in commands), commands
+print("\n".join(commands))
+PY
+while read -r example; do
+  command=${example//build\/baize/$baize}
+  command=${command//out\//$work/docs-out/}
+  eval "$command" > /dev/null || fail "docs/games.md example failed: $example"
+done < "$work/examples.sh"
+[ -s "$work/docs-out/snooker.jsonl" ] || fail "the snooker example wrote no log"
+ls "$work/docs-out/8-ball"/shot_000.png > /dev/null || fail "the 8-ball example drew no picture"
 echo "play CLI tests passed"

@@ -8,6 +8,7 @@
 #include "tools/baize/batch_command.h"
 #include "tools/baize/bench_accuracy_command.h"
 #include "tools/baize/bench_cushion_command.h"
+#include "tools/baize/bench_play_command.h"
 #include "tools/baize/bench_render_command.h"
 #include "tools/baize/bench_shots_command.h"
 #include "tools/baize/calibrate_command.h"
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   addBenchShotsCommand(*bench);
   addBenchAccuracyCommand(*bench);
   addBenchRenderCommand(*bench);
+  addBenchPlayCommand(*bench);
 
   addQuietFlag(app);
   app.set_version_flag("--version", std::string("baize ") + BAIZE_VERSION);

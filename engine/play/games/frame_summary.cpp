@@ -31,6 +31,11 @@ FrameSummary summarizeFrame(const PlayedFrame& frame) {
     if (visit_ends && s.state.game == Game::Snooker && visit > 0) summary.breaks.push_back(visit);
   }
   summary.run_out = summary.finished && summary.winner == 0 && summary.players[1].shots == 0;
+  const auto& shots = frame.shots;
+  summary.first_visit_run_out =
+      summary.finished && shots.size() > 1 && summary.winner == shots[1].state.player &&
+      std::none_of(shots.begin() + 1, shots.end(),
+                   [](const PlayedShot& s) { return s.decision.turn_passes; });
   return summary;
 }
 

@@ -1,6 +1,7 @@
 // What a played frame amounts to (`baize play`'s summary, `baize bench play`): per player the
 // shots, visits to the table, balls potted, fouls and the best visit; the winner; whether the
-// breaker ran out (won without the opponent taking a shot); snooker breaks.
+// breaker ran out (won without the opponent taking a shot); whether the first visit after the
+// break cleared the table; snooker breaks.
 #pragma once
 
 #include <array>
@@ -22,7 +23,9 @@ struct FrameSummary {
   std::array<PlayerSummary, 2> players;
   int winner = -1;
   bool finished = false;
-  bool run_out = false;     // the breaker won and the opponent never played
+  bool run_out = false;     // the breaker won and the opponent never played (break and run)
+  // The player of the first shot after the break won in that one visit (cleared the table).
+  bool first_visit_run_out = false;
   std::vector<int> breaks;  // snooker: the points of each scoring visit, in order
 };
 

@@ -13,6 +13,7 @@ namespace {
 // kStrokeStream); the player's own noisy look-ahead uses its seeds below it.
 constexpr std::uint64_t kStrokeStream = 1ull << 40;
 constexpr std::uint64_t kPlayerStreamBase = 1ull << 20;
+constexpr std::uint64_t kRackStream = 1ull << 41;  // the rack's jitter
 
 }  // namespace
 
@@ -65,13 +66,21 @@ PlayedShot playShot(const GameSetup& setup, const GameState& state, const PlayOp
   return played;
 }
 
+GameState frameStart(const GameSetup& setup, const PlayOptions& options) {
+  RackOptions rack;
+  rack.gap_m = jitteredRackGap_m(kRackJitter_m);
+  rack.jitter_seed = sampleSeed(options.seed, 0, kRackStream);
+  rack.jitter_radius_m = kRackJitter_m;
+  return initialGameState(setup.game, setup.scene.table, setup.scene.ball_set, rack);
+}
+
 PlayedFrame playFrame(const GameSetup& setup, const PlayOptions& options,
                       const ShotSource& player0) {
   if (options.max_shots < 1) {
     physics::rejectValue("max_shots", options.max_shots, "it must be at least 1");
   }
   PlayedFrame frame;
-  GameState state = initialGameState(setup.game, setup.scene.table, setup.scene.ball_set);
+  GameState state = frameStart(setup, options);
   while (!state.frame_over && static_cast<int>(frame.shots.size()) < options.max_shots) {
     frame.shots.push_back(
         playShot(setup, state, options, static_cast<int>(frame.shots.size()), player0));

@@ -42,6 +42,13 @@ struct PlayedFrame {
   bool finished = false;  // the frame is over (else the shot limit stopped it)
 };
 
+// The rack each ball of which lies within this radius of its place (m), drawn from the frame's
+// seed: the largest jitter racks take (engine/io/rack.h), under a millimetre as real racks are.
+constexpr double kRackJitter_m = kMaxJitterRadius_m;
+
+// The state before the break: the game's rack jittered by the seed, the cue ball in hand.
+GameState frameStart(const GameSetup& setup, const PlayOptions& options);
+
 // Plays one frame of `setup.game`. Throws std::invalid_argument for options out of range.
 PlayedFrame playFrame(const GameSetup& setup, const PlayOptions& options,
                       const ShotSource& player0 = {});

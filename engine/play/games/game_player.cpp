@@ -13,13 +13,14 @@ namespace {
 using Eigen::Vector2d;
 
 constexpr double kDegToRad = M_PI / 180;
-constexpr double kPotSpeeds_mps[] = {1.0, 1.8, 2.8};   // soft, medium, firm
-constexpr double kPotHeights[] = {-0.3, 0.0, 0.3};     // draw, stun, follow (units of R)
+constexpr double kPotSpeeds_mps[] = {0.8, 1.3, 1.9, 2.7, 3.6};  // soft to firm
+constexpr double kPotHeights[] = {-0.35, -0.15, 0.0, 0.2, 0.4};  // draw to follow (units of R)
 constexpr double kSafetySpeeds_mps[] = {1.0, 2.0};     // enough to reach a cushion after contact
 constexpr double kHandDistances_m[] = {0.3, 0.6};      // cue ball behind the ghost ball, from hand
 constexpr double kHandAngles_deg[] = {0.0, 25.0, -25.0};  // cut angles given to a placed cue ball
 constexpr int kSafetyTargets = 3;                      // nearest legal balls tried for a safety
 constexpr double kSafetyThickness = 0.6;  // aim offsets of a safety, as a share of a full ball
+constexpr int kAreaSteps = 4;  // grid steps across the D or behind the head string
 constexpr double kThrowProbe_rad = 1.7e-3;  // secant's first step on the aim: 0.1 deg
 
 struct PotPlan {
@@ -40,10 +41,42 @@ Vector2d cueAt(const GameState& state, const std::optional<Vector2d>& place) {
   return place ? *place : state.balls.front().position_m;
 }
 
+// The allowed places of a grid over the area a restricted cue ball in hand may take: the D
+// (snooker) or the part of the table behind the head string (pool).
+std::vector<Vector2d> areaPlaces(const GameSetup& setup, const GameState& state) {
+  const Table& table = setup.scene.table;
+  std::vector<Vector2d> grid;
+  if (state.in_hand == CueBallInHand::InD) {
+    const SnookerMarkings& m = table.snooker_markings.value();
+    for (int ring = 0; ring <= kAreaSteps; ++ring) {
+      for (int a = 0; a <= 2 * kAreaSteps; ++a) {
+        const double angle = M_PI / 2 + M_PI * a / (2 * kAreaSteps);
+        grid.push_back(m.brown_spot_m + m.d_radius_m * ring / kAreaSteps *
+                                            Vector2d(std::cos(angle), std::sin(angle)));
+      }
+    }
+  } else if (state.in_hand == CueBallInHand::BehindHeadString) {
+    const double head = table.pool_markings.value().head_string_x_m;
+    const double x0 = -table.length_m / 2, half_width = table.width_m / 2;
+    for (int i = 1; i <= kAreaSteps; ++i) {
+      for (int j = 1; j < 2 * kAreaSteps; ++j) {
+        grid.emplace_back(x0 + (head - x0) * i / kAreaSteps,
+                          -half_width + half_width * j / kAreaSteps);
+      }
+    }
+  }
+  std::vector<Vector2d> allowed;
+  for (const Vector2d& p : grid) {
+    if (placementRefusal(state, p, table, radiusOf(setup)).empty()) allowed.push_back(p);
+  }
+  return allowed;
+}
+
 std::vector<PotPlan> potPlans(const GameSetup& setup, const GameState& state, int keep) {
   const Table& table = setup.scene.table;
   const double r = radiusOf(setup);
   std::vector<PotPlan> plans;
+  const std::vector<Vector2d> area = areaPlaces(setup, state);
   for (const std::string& target : legalTargets(state)) {
     for (int k = 0; k < static_cast<int>(table.pockets.size()); ++k) {
       if (state.in_hand == CueBallInHand::No) {
@@ -51,6 +84,11 @@ std::vector<PotPlan> potPlans(const GameSetup& setup, const GameState& state, in
         if (ease > 0) plans.push_back({target, k, std::nullopt, ease});
         continue;
       }
+      for (const Vector2d& place : area) {
+        const double ease = potEase(state.balls, place, target, k, table, r);
+        if (ease > 0) plans.push_back({target, k, place, ease});
+      }
+      if (state.in_hand != CueBallInHand::Anywhere) continue;
       const Vector2d object = state.ball(target)->position_m;
       const Vector2d ghost = ghostBall(object, table.pockets[k], r);
       const Vector2d u = (table.pockets[k].mouth_centre_m - object).normalized();
@@ -130,9 +168,13 @@ std::vector<Scored> potCandidates(const GameSetup& setup, const GameState& state
   return scored;
 }
 
-// A place for the cue ball from hand when no pot plan gave one: the first allowed point on rings
-// around the legal balls.
+// A place for the cue ball from hand when no pot plan gave one: the first allowed point of the
+// restricted area, or on rings around the legal balls.
 std::optional<Vector2d> anyPlace(const GameSetup& setup, const GameState& state) {
+  if (state.in_hand != CueBallInHand::Anywhere) {
+    const std::vector<Vector2d> area = areaPlaces(setup, state);
+    return area.empty() ? std::nullopt : std::optional<Vector2d>(area.front());
+  }
   for (const std::string& target : legalTargets(state)) {
     for (double d : kHandDistances_m) {
       for (int step = 0; step < 8; ++step) {

@@ -16,17 +16,17 @@ namespace baize::engine {
 
 struct PlayerOptions {
   ExecutionNoise noise;   // the errors the player expects of its own strokes
-  int candidates = 4;     // pots kept from the geometric ranking
-  int finalists = 3;      // noise-free best shots sampled with noise
-  int noisy_samples = 8;  // samples per finalist
+  int candidates = 6;      // pots kept from the geometric ranking
+  int finalists = 6;       // noise-free best shots sampled with noise
+  int noisy_samples = 16;  // samples per finalist
 };
 
 // The value of a shot that keeps the table: this share for keeping it, the rest for the ease of
 // the next pot it leaves.
-constexpr double kKeepShare = 0.4;
-// A safety is worth this share of the opponent's difficulty (1 - their best ease): the player
-// prefers a pot kept with at least about this probability.
-constexpr double kSafetyShare = 0.5;
+constexpr double kKeepShare = 0.6;
+// A legal safety is worth this share of the opponent's difficulty (1 - their best ease); a pot
+// whose sampled value reaches it is played without trying safeties.
+constexpr double kSafetyShare = 0.4;
 
 // The shot the player chooses; deterministic for `seed`.
 GameShot chooseShot(const GameSetup& setup, const GameState& state, const PlayerOptions& options,

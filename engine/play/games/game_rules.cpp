@@ -10,10 +10,11 @@
 
 namespace baize::engine {
 
-GameState initialGameState(Game game, const Table& table, const BallSet& balls) {
+GameState initialGameState(Game game, const Table& table, const BallSet& balls,
+                           const RackOptions& rack) {
   GameState state;
   state.game = game;
-  state.balls = placeRack(gameName(game), table, balls);
+  state.balls = placeRack(gameName(game), table, balls, rack);
   if (game == Game::Snooker) {
     state.in_hand = CueBallInHand::InD;
     state.ball_on = "red";

@@ -15,7 +15,9 @@ namespace baize::engine {
 // The rack of `game` placed on `table` (engine/io/rack.h) with the cue ball in hand for the break:
 // behind the head string (pool) or in the D (snooker); player 0 breaks. Throws
 // std::invalid_argument when the table is of the other kind or the set lacks the game's balls.
-GameState initialGameState(Game game, const Table& table, const BallSet& balls);
+// `rack` may jitter the racked balls (engine/io/rack.h): no two racks are ever alike.
+GameState initialGameState(Game game, const Table& table, const BallSet& balls,
+                           const RackOptions& rack = {});
 
 // The balls the player to play may hit first.
 std::vector<std::string> legalTargets(const GameState& state);

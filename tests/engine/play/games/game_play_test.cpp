@@ -54,7 +54,9 @@ TEST(GamePlay, ShotsChainAndRespectTheTable) {
     const double r = setup.scene.ball_set.radius_m;
     for (std::size_t i = 0; i < frame.shots.size(); ++i) {
       const PlayedShot& s = frame.shots[i];
-      if (i > 0) EXPECT_EQ(s.state, frame.shots[i - 1].next);
+      if (i > 0) {
+        EXPECT_EQ(s.state, frame.shots[i - 1].next);
+      }
       EXPECT_EQ(s.state.shots, static_cast<int>(i));
       if (s.intended.place) {
         EXPECT_EQ(placementRefusal(s.state, *s.intended.place, setup.scene.table, r), "");
@@ -63,7 +65,9 @@ TEST(GamePlay, ShotsChainAndRespectTheTable) {
       }
       for (std::size_t a = 1; a < s.next.balls.size(); ++a) {
         for (std::size_t b = 0; b < a; ++b) {
-          if (b == 0 && s.next.in_hand != CueBallInHand::No) continue;  // the cue ball is lifted
+          if (b == 0 && s.next.in_hand != CueBallInHand::No) {
+            continue;  // the cue ball is lifted
+          }
           EXPECT_GE((s.next.balls[a].position_m - s.next.balls[b].position_m).norm(), 2 * r - 1e-9);
         }
       }

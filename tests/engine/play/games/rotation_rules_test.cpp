@@ -137,6 +137,21 @@ TEST(RotationRules, NineBallSpottedBehindABallOnTheFootSpot) {
   EXPECT_NEAR((at - foot).norm(), 2 * test::poolRadius(), 1e-6);
 }
 
+TEST(RotationRules, NineBallSpottedInFrontWhenTheStringBehindIsFull) {
+  const Vector2d foot = test::poolTable().pool_markings->foot_spot_m;
+  const double step = 2 * test::poolRadius() + 1e-4;
+  GameState s = test::stateWith(Game::NineBall, {{"cue", kCueAt}, {"1", kOneAt}, {"9", kMoneyAt}});
+  for (int k = 0; foot.x() + k * step < test::poolTable().length_m / 2; ++k) {
+    s.balls.push_back({"b" + std::to_string(k), foot + Vector2d(k * step, 0)});
+  }
+  const Ruling r = rule(s, HandMadeShot(s).cushion("cue").pocket("9", 3));
+  ASSERT_TRUE(r.next.onTable("9"));
+  const Vector2d at = r.next.ball("9")->position_m;
+  EXPECT_EQ(at.y(), 0);
+  EXPECT_LT(at.x(), foot.x());  // towards the head, frozen to the ball on the spot
+  EXPECT_NEAR(foot.x() - at.x(), 2 * test::poolRadius(), 1e-6);
+}
+
 TEST(RotationRules, LegalBreakWithoutAPotPassesAndOffersThePushOut) {
   for (Game g : {Game::NineBall, Game::TenBall}) {
     GameState s = rack(g);
