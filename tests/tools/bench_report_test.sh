@@ -14,7 +14,7 @@ out=$(bash "$root/tools/bench_report.sh" --quick --baize "$baize" --out "$work/b
   --images "$work" --readme "$work/README.md") || fail "bench_report.sh exited $?"
 grep -q "^wrote $work/bench.md: Random single shots: " <<<"$out" || fail "output: $out"
 for part in "- Commit: " "- Machine: " "## Whole shots" "| 9-ball-break |" "## Accuracy against run time" \
-  "| event | exact |" "## The cushion solvers" "| exact | default |" "## Rendering" "bench-accuracy.png"; do
+  "| event | exact |" "## The cushion solvers" "| exact | default |" "## Rendering" "bench-accuracy.png" "## Python" "baize.simulate_many"; do
   grep -qF -- "$part" "$work/bench.md" || fail "the report has no '$part'"
 done
 [[ -s "$work/bench-accuracy.png" && -s "$work/bench-cushion.png" ]] || fail "charts not written"
