@@ -56,8 +56,8 @@ def dask_figures(scenes, chunk):
 def main():
     quick = "--quick" in sys.argv[1:]
     single, repeats = (20, 3) if quick else (300, 21)
-    batch, batch_repeats = (200, 1) if quick else (20000, 5)
-    dask_shots, chunk = (200, 50) if quick else (20000, 500)
+    batch, batch_repeats = (200, 1) if quick else (5000, 5)
+    dask_shots, chunk = (200, 50) if quick else (10000, 500)
     python_ns, native_ns = median_ratio_python_to_native(baize.random_shots(single, seed=1), repeats)
     scenes = baize.random_shots(batch, seed=2)
     one = shots_per_second(scenes, 1, batch_repeats)
