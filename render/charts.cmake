@@ -6,6 +6,7 @@ pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
 add_library(baize_charts STATIC
   ${CMAKE_CURRENT_SOURCE_DIR}/chart_axis.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/line_chart.cpp)
-target_include_directories(baize_charts PUBLIC ${PROJECT_SOURCE_DIR})
+baize_library_includes(baize_charts)
+set_target_properties(baize_charts PROPERTIES EXPORT_NAME charts)
 # Cairo is public: the tests decode the PNG files with it to check their pixels.
 target_link_libraries(baize_charts PUBLIC baize_physics baize_whole_file PkgConfig::CAIRO)

@@ -1,5 +1,6 @@
 #include "render/glyph_atlas.h"
 
+#include <fontconfig/fontconfig.h>
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
@@ -14,10 +15,37 @@ constexpr int kFirstCharacter = 32;
 constexpr int kLastCharacter = 126;
 // Empty pixels between glyphs in the atlas, so that sampling one never picks up its neighbour.
 constexpr int kGlyphPadding_px = 1;
+// The legend's font family (Debian: fonts-dejavu-core), located through fontconfig.
+constexpr const char* kDefaultFontFamily = "DejaVu Sans";
 
 }  // namespace
 
-std::string defaultFontPath() { return BAIZE_DEFAULT_FONT; }
+std::string defaultFontPath() {
+  // Asked once: fontconfig's answer does not change while the program runs.
+  static const std::string path = [] {
+    FcConfig* config = FcInitLoadConfigAndFonts();
+    if (config == nullptr) throw std::runtime_error("fontconfig cannot load its configuration");
+    const std::unique_ptr<FcConfig, void (*)(FcConfig*)> config_owner(config, FcConfigDestroy);
+    FcPattern* wanted = FcNameParse(reinterpret_cast<const FcChar8*>(kDefaultFontFamily));
+    const std::unique_ptr<FcPattern, void (*)(FcPattern*)> wanted_owner(wanted, FcPatternDestroy);
+    FcConfigSubstitute(config, wanted, FcMatchPattern);
+    FcDefaultSubstitute(wanted);
+    FcResult result = FcResultNoMatch;
+    FcPattern* match = FcFontMatch(config, wanted, &result);
+    if (match == nullptr) {
+      throw std::runtime_error(std::string("fontconfig finds no font for '") + kDefaultFontFamily +
+                               "' (Debian: install fonts-dejavu-core)");
+    }
+    const std::unique_ptr<FcPattern, void (*)(FcPattern*)> match_owner(match, FcPatternDestroy);
+    FcChar8* file = nullptr;
+    if (FcPatternGetString(match, FC_FILE, 0, &file) != FcResultMatch || file == nullptr) {
+      throw std::runtime_error(std::string("fontconfig's match for '") + kDefaultFontFamily +
+                               "' names no file");
+    }
+    return std::string(reinterpret_cast<const char*>(file));
+  }();
+  return path;
+}
 
 GlyphAtlas::GlyphAtlas(const std::string& font_path, int pixel_size) : pixel_size_(pixel_size) {
   if (pixel_size < kMinAtlasTextSize_px || pixel_size > kMaxAtlasTextSize_px) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The layer rule, checked: every #include in the source tree points down or sideways, never up.
 
-    physics/  <-  engine/sim/  <-  engine/models/  <-  engine/io/  <-  engine/play/, engine/fit/, engine/baselines/  <-  render/  <-  tools/
+    physics/  <-  engine/sim/  <-  engine/models/  <-  engine/io/  <-  engine/play/, engine/fit/, engine/baselines/  <-  render/  <-  tools/, python/
 
 with one exception: engine/models/ reads its parameters with engine/io/json_reader (which
 includes nothing of this project), so it may include that one file of engine/io/.
@@ -26,6 +26,7 @@ ALLOWED = {
     "engine/baselines/": ["physics/", "engine/sim/", "engine/models/", "engine/io/", "engine/baselines/"],
     "render/": ["physics/", "engine/", "render/"],
     "tools/": ["physics/", "engine/", "render/", "tools/"],
+    "python/": ["physics/", "engine/", "render/", "python/"],
 }
 # Outside libraries (an include prefix) and the only files that may include them.
 CONFINED = {
@@ -48,7 +49,7 @@ def violations(root, checked=None):
         if checked is not None:
             checked.append(rel)
         for kind, target in INCLUDE.findall(path.read_text(errors="replace")):
-            if kind == '"' and "/" in target and target.split("/")[0] in ("physics", "engine", "render", "tools"):
+            if kind == '"' and "/" in target and target.split("/")[0] in ("physics", "engine", "render", "tools", "python"):
                 if not any(target.startswith(p) for p in ALLOWED[folder]):
                     found.append(f"{rel}: includes {target}, above its layer ({folder} may use {', '.join(ALLOWED[folder])})")
             for lib, homes in CONFINED.items():

@@ -56,6 +56,14 @@ progress "accuracy against run time"
 "$baize" bench accuracy "${accuracy_flags[@]}" --csv "$work/accuracy.csv" > "$work/accuracy.txt"
 progress "cushion solvers"
 "$baize" bench cushion "${cushion_flags[@]}" --csv "$work/cushion.csv" > "$work/cushion.txt"
+progress "Python package"
+python_bench=(/usr/bin/python3 tools/bench_python.py)
+[[ $quick -eq 1 ]] && python_bench+=(--quick)
+if [[ -d "$(dirname "$baize")/python/baize" ]]; then
+  PYTHONPATH="$(dirname "$baize")/python" "${python_bench[@]}" > "$work/python.md"
+else
+  printf '## Python\n\nNot measured: built with BAIZE_WITH_PYTHON=OFF.\n' > "$work/python.md"
+fi
 progress "rendering"
 GALLIUM_DRIVER=llvmpipe "$baize" bench render "${render_flags[@]}" > "$work/render.txt"
 progress "game play"
@@ -148,7 +156,7 @@ doc = [
     "",
     table(f"{work}/play-snooker.csv"),
     "",
-]
+] + text(f"{work}/python.md") + [""]
 open(out, "w").write("\n".join(doc))
 open(out + ".headline", "w").write(headline + "\n")
 PY

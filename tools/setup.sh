@@ -19,6 +19,10 @@ packages=(
   libsdl2-dev            # the baize-view window
   libgl1-mesa-dri        # Mesa's software rasteriser behind EGL: baize-view with no display (tests)
   libfreetype-dev fonts-dejavu-core  # legend text and the charts' font (DejaVu Sans)
+  libfontconfig-dev      # finding that font at run time
+  python3-dev python3-pybind11 python3-numpy  # the Python package baize
+  python3-pytest         # its tests
+  python3-distributed    # spreading batches over a Dask cluster (baize.dask) and its test
 )
 
 missing=()

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "engine/io/assets_directory.h"
 #include "engine/io/json_reader.h"
 #include "physics/value_text.h"
 
@@ -539,8 +540,6 @@ Table tableFromJson(const nlohmann::json& document, const std::string& source) {
 Table loadTable(const std::string& path) {
   return tableFromJson(JsonReader::parseFile(path), path);
 }
-
-std::string assetsDirectory() { return BAIZE_ASSETS_DIR; }
 
 std::vector<std::string> builtinTableNames() {
   return {"pool-7ft", "pool-8ft", "pool-9ft", "snooker-12ft"};

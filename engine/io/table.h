@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/io/assets_directory.h"  // builtinTable reads from it; callers list its files
 #include "engine/sim/table_geometry.h"
 #include "physics/cushion_model.h"
 
@@ -123,8 +124,5 @@ TableGeometry geometryOf(const Table& table);
 // back to back (a bench, a search over many shots, a batch) mostly share one table. The reference
 // holds until the next call on this thread.
 const TableGeometry& cachedGeometryOf(const Table& table);
-
-// Directory of the shipped assets (tables/, balls/).
-std::string assetsDirectory();
 
 }  // namespace baize::engine

@@ -19,8 +19,8 @@ engine::Scene nineFootPoolScene() {
   return scene;
 }
 
-std::vector<engine::Scene> randomSingleShots(int count) {
-  std::mt19937_64 engine(20261121);
+std::vector<engine::Scene> randomSingleShots(int count, std::uint64_t seed) {
+  std::mt19937_64 engine(seed);
   auto uniform = [&](double lo, double hi) {
     return lo + (hi - lo) * ((engine() >> 11) * 0x1.0p-53);
   };

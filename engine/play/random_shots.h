@@ -3,6 +3,7 @@
 // their impacts (the impacts play produces, besides the bench's drawn sets).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "engine/io/scene.h"
@@ -16,8 +17,10 @@ engine::Scene nineFootPoolScene();
 
 // A seeded set of single shots on the 9 ft table: the cue ball and one object ball anywhere, the
 // cue ball struck at 0.5-4 m/s in any direction with any tip offset (up to 0.45 R). The first
-// `count` shots are the same whatever `count` is.
-std::vector<engine::Scene> randomSingleShots(int count);
+// `count` shots are the same whatever `count` is; another `seed` gives another set.
+inline constexpr std::uint64_t kRandomSingleShotsSeed = 20261121;
+std::vector<engine::Scene> randomSingleShots(int count,
+                                             std::uint64_t seed = kRandomSingleShotsSeed);
 
 // Every cushion and jaw impact of the shots, in order, as the cushion model met it: the incoming
 // ball in the contact's local frame (contacts not moving into the cushion, which are no impact,

@@ -15,7 +15,7 @@ out=$(bash "$root/tools/bench_report.sh" --quick --baize "$baize" --out "$work/b
 grep -q "^wrote $work/bench.md: Random single shots: " <<<"$out" || fail "output: $out"
 for part in "- Commit: " "- Machine: " "## Whole shots" "| 9-ball-break |" "## Accuracy against run time" \
   "| event | exact |" "## The cushion solvers" "| exact | default |" "## Rendering" "bench-accuracy.png" \
-  "## Game play" "| 9-ball | 1.00 | 2 |" "| snooker | 1.00 | 1 |"; do
+  "## Game play" "| 9-ball | 1.00 | 2 |" "| snooker | 1.00 | 1 |" "## Python" "baize.simulate_many"; do
   grep -qF -- "$part" "$work/bench.md" || fail "the report has no '$part'"
 done
 [[ -s "$work/bench-accuracy.png" && -s "$work/bench-cushion.png" ]] || fail "charts not written"

@@ -47,7 +47,9 @@ int main(int argc, char** argv) {
   bench->require_subcommand(1, 1);
   addBenchCushionCommand(*bench);
   addBenchShotsCommand(*bench);
+#ifdef BAIZE_WITH_BOX2D  // it compares against Box2D: absent from a build without it
   addBenchAccuracyCommand(*bench);
+#endif
   addBenchRenderCommand(*bench);
   addBenchPlayCommand(*bench);
 

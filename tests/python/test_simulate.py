@@ -1,0 +1,96 @@
+"""baize.simulate and its Result: events, final positions, pocketed balls, samples."""
+import pickle
+
+import numpy as np
+import pytest
+
+import baize
+
+
+@pytest.fixture
+def stun(scenes_dir):
+    return baize.simulate(baize.load_scene(str(scenes_dir / "stun-shot.json")))
+
+
+def test_the_stun_shot_pots_the_one_ball(stun):
+    assert stun.first_ball_hit == "1"
+    assert [ball for ball, _ in stun.pocketed] == ["1"]
+    assert stun.foul == "none"
+    kinds = [e.kind for e in stun.events]
+    assert kinds.count("ball-ball") == 1 and kinds.count("pocket") == 1
+    pocket = next(e for e in stun.events if e.kind == "pocket")
+    assert pocket.balls == ["1"] and pocket.pocket == stun.pocketed[0][1] and pocket.cushion is None
+
+
+def test_events_are_in_time_order_and_end_at_rest(stun):
+    times = [e.time for e in stun.events]
+    assert times == sorted(times) and times[-1] <= stun.end_time
+
+
+def test_final_positions_are_n_by_2_and_agree_with_samples(stun):
+    final = stun.final_positions
+    assert final.shape == (2, 2) and final.dtype == np.float64
+    samples = stun.sample([0.0, stun.end_time, stun.end_time + 5.0])
+    assert samples.shape == (2, 3, 2)
+    cue = stun.ball_ids.index("cue")
+    np.testing.assert_array_equal(samples[cue, 1], final[cue])  # the cue ball where it stopped
+    np.testing.assert_array_equal(samples[cue, 2], final[cue])  # and stays there
+
+
+def test_samples_start_where_the_scene_put_the_balls(scenes_dir):
+    scene = baize.load_scene(str(scenes_dir / "draw-shot.json"))
+    result = baize.simulate(scene)
+    np.testing.assert_array_equal(result.sample([0.0])[:, 0, :], scene.positions)
+    path = result.sample(np.linspace(0, result.end_time, 50))[result.ball_ids.index("cue")]
+    assert np.all(np.abs(path[:, 0]) < 1.3) and np.all(np.abs(path[:, 1]) < 0.65)  # on the table
+
+
+@pytest.mark.parametrize("bad", [[-1.0], [float("nan")], [[0.0, 1.0]]])
+def test_bad_sample_times_are_a_value_error(stun, bad):
+    with pytest.raises(ValueError, match="time|dimension"):
+        stun.sample(bad)
+
+
+def test_results_pickle_to_the_same_bits(stun):
+    copy = pickle.loads(pickle.dumps(stun))
+    assert copy.events == stun.events and copy.pocketed == stun.pocketed
+    assert copy.final_positions.tobytes() == stun.final_positions.tobytes()
+    times = np.linspace(0, stun.end_time, 17)
+    assert copy.sample(times).tobytes() == stun.sample(times).tobytes()
+
+
+def test_a_shot_that_cannot_finish_raises(scenes_dir):
+    scene = baize.Scene(table="pool-9ft", ball_set="pool", rack={"name": "9-ball"},
+                        shot={"aim_at": "1", "speed_mps": 8}, physics={"max_events": 3})
+    with pytest.raises(RuntimeError, match="3"):
+        baize.simulate(scene)
+
+
+def test_simulate_wants_a_scene():
+    with pytest.raises(TypeError):
+        baize.simulate("9-ball-break.json")
+
+
+def test_cushion_impact_head_on_rolling():
+    out = baize.cushion_impact()
+    assert out["velocity"].shape == (3,)
+    assert 0 < out["rebound_speed"] < 1.0  # slower than it came in
+    assert abs(out["rebound_angle_deg"] - 90) < 1e-9  # straight back, no sidespin
+    paper = baize.cushion_impact(solver="paper", steps=20000)
+    assert abs(paper["rebound_speed"] - out["rebound_speed"]) < 1e-3
+    with pytest.raises(ValueError, match="solver"):
+        baize.cushion_impact(solver="magic")
+    with pytest.raises(ValueError):
+        baize.cushion_impact(restitution=2.0)
+    with pytest.raises(ValueError, match="speed"):
+        baize.cushion_impact(speed=float("inf"))
+
+
+@pytest.mark.skipif(not baize.with_render, reason="built without rendering")
+def test_render_png_writes_a_picture(tmp_path, scenes_dir):
+    scene = baize.load_scene(str(scenes_dir / "stun-shot.json"))
+    path = tmp_path / "stun.png"
+    baize.render_png(scene, str(path), width=320, height=160)
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(ValueError, match="width"):
+        baize.render_png(scene, str(path), width=1)
