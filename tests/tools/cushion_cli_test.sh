@@ -313,6 +313,8 @@ assert shots["defaultexact"] < shots["N=50000paper"] < shots["N=100paper"], shot
 ' "$work/bench_pool.csv" "$work/bench_shots.csv"
 grep -qE "^exact default: [0-9]+\.[0-9] evaluations per impact; [0-9]+ of [0-9]+ impacts above 5e-10 V0, 0 above the promised 1e-9 V0 \(kept\)$" \
   "$work/bench_shots.out" || fail "the shots bench does not report the exact solver's promise: $(grep "exact default" "$work/bench_shots.out")"
+grep -qE "^tabulated default \(the default path\): [1-9][0-9]* of [0-9]+ impacts answered from the table, the rest solved exactly; [0-9.e+-]+ ns median; largest error [0-9.e+-]+ V0, 99.9th percentile [0-9.e+-]+ V0; promised 1e-8 V0 \(kept\)$" \
+  "$work/bench_shots.out" || fail "the shots bench does not report the default path's promise: $(grep "tabulated default" "$work/bench_shots.out")"
 
 # ---- 7. The sets that check the exact solver's promise alone: spin about every axis, and grippy
 # cushions and cloth drawn per impact. One row each, the same for the same seed, another for

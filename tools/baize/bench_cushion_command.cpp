@@ -108,6 +108,18 @@ void printPromise(const BenchRow& exact, int impacts) {
   std::cout << line.str();
 }
 
+// The default path's promise line (its median time only where it was timed).
+void printTabulatedPromise(const BenchRow& tabulated, std::size_t impacts) {
+  const bool kept = tabulated.max_error <= kTabulatedPromise;
+  std::cout << "tabulated default (the default path): " << tabulated.table_answers << " of "
+            << impacts << " impacts answered from the table, the rest solved exactly; "
+            << std::setprecision(3);
+  if (tabulated.median_ns > 0) std::cout << tabulated.median_ns << " ns median; ";
+  std::cout << "largest error " << tabulated.max_error << " V0, 99.9th percentile "
+            << tabulated.p999_error << " V0; promised " << exponentText(kTabulatedPromise)
+            << " V0 (" << (kept ? "kept" : "NOT kept") << ")\n";
+}
+
 // --set spinning or grippy: the exact solver at its default against the reference, no timing.
 void runPromiseSet(const BenchFlags& flags, const physics::CushionParams& params,
                    std::optional<AtomicFile>* csv) {
@@ -139,6 +151,7 @@ void runPromiseSet(const BenchFlags& flags, const physics::CushionParams& params
       << report.row.above_promise << ',' << physics::valueText(report.row.max_error);
   std::cout << header << '\n' << row.str() << '\n';
   printPromise(report.row, static_cast<int>(inputs.size()));
+  printTabulatedPromise(report.tabulated, inputs.size());
   const BenchInput& worst = inputs[report.worst];
   const physics::CushionParams& own = worst.params ? *worst.params : params;
   const double spin_unit = worst.speed_mps / own.radius_m;  // V0 / R
@@ -256,14 +269,7 @@ void runBench(const BenchFlags& flags) {
   printRatio("accuracy ratio (paper N=5000 max_error / exact default max_error)",
              paper.max_error / exact.max_error, targets ? kAccuracyTarget : 0);
   printPromise(exact, static_cast<int>(inputs.size()));
-  const BenchRow& tabulated = rowLabelled(report, SolverKind::Tabulated, "default");
-  const bool kept = tabulated.max_error <= kTabulatedPromise;
-  std::cout << "tabulated default (the default path): " << tabulated.table_answers << " of "
-            << inputs.size() << " impacts answered from the table, the rest solved exactly; "
-            << std::setprecision(3) << tabulated.median_ns << " ns median; largest error "
-            << tabulated.max_error << " V0, 99.9th percentile " << tabulated.p999_error
-            << " V0; promised " << exponentText(kTabulatedPromise) << " V0 ("
-            << (kept ? "kept" : "NOT kept") << ")\n";
+  printTabulatedPromise(rowLabelled(report, SolverKind::Tabulated, "default"), inputs.size());
 
   if (csv) {
     csv->stream() << header << '\n';

@@ -248,6 +248,10 @@ PromiseReport scorePromise(const physics::CushionParams& params,
                            const std::vector<BenchInput>& inputs) {
   PromiseReport report;
   const SolverSetting exact_default;
+  SolverSetting tabulated;
+  tabulated.kind = SolverKind::Tabulated;
+  report.tabulated.setting = tabulated;
+  std::vector<double> tabulated_errors;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const physics::CushionParams& own = inputs[i].params ? *inputs[i].params : params;
     const physics::BallVelocity reference =
@@ -258,7 +262,14 @@ PromiseReport scorePromise(const physics::CushionParams& params,
     const double largest_before = report.row.max_error;
     tally(result, error, &report.row);
     if (!sameBits(report.row.max_error, largest_before)) report.worst = i;
+    const physics::CushionImpactResult path =
+        solveCushionShot(own, inputs[i].incoming, tabulated);
+    tabulated_errors.push_back(
+        impactError(path.after, reference, own.radius_m, inputs[i].speed_mps));
+    tally(path, tabulated_errors.back(), &report.tabulated);
+    report.tabulated.table_answers += path.final_impulse_Ns == 0;
   }
+  report.tabulated.p999_error = percentile(tabulated_errors, kReportedPercentile);
   report.row.evaluations_per_impact /= static_cast<double>(std::max<std::size_t>(1, inputs.size()));
   return report;
 }

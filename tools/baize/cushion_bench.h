@@ -106,12 +106,14 @@ std::vector<BenchInput> grippyBenchInputs(const physics::CushionParams& params, 
 // stands for all. Throws std::invalid_argument with the model's refusal otherwise.
 void validateGrippyCushion(const physics::CushionParams& params);
 
-// The exact solver at its default tolerance over the inputs, scored against the reference (each
-// input with its own cushion where it has one): what its promise is checked on.
+// The exact solver at its default tolerance, and the default path, over the inputs, scored against
+// the reference (each input with its own cushion where it has one): what their promises are
+// checked on.
 struct PromiseReport {
   BenchRow row;                      // median_ns unset
   std::size_t worst = 0;             // the input with the largest error
   double reference_check_error = 0;  // as in BenchReport
+  BenchRow tabulated;                // the default path on the same inputs (median_ns unset)
 };
 PromiseReport scorePromise(const physics::CushionParams& params,
                            const std::vector<BenchInput>& inputs);
