@@ -17,6 +17,7 @@
 #include "physics/cushion_exact_solver.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/median.h"
 
 namespace baize::tools {
@@ -94,7 +95,8 @@ void runBenchShots(const BenchShotsFlags& flags) {
     try {
       physics::validateExactSolverOptions(options);
     } catch (const std::invalid_argument& refused) {
-      throw UsageError(std::string(refused.what()) + " (set by --cushion-tolerance)");
+      throw UsageError(
+          namingTheFlag(refused.what(), "exact solver tolerance", "--cushion-tolerance"));
     }
   }
   // The scenes and random shots, with the tolerance asked for.
@@ -141,7 +143,9 @@ void runBenchShots(const BenchShotsFlags& flags) {
   // Each shot once per pass (its first run: as a user runs it), one core first.
   std::vector<double> one, two, events;
   double one_core_total_s = 0;
+  Progress progress("random shots timed", static_cast<long>(shots.size()) * (second ? 2 : 1));
   for (const engine::Scene& s : shots) {
+    progress.advance();
     std::size_t count = 0;
     const double us = timedRun(s, nullptr, &count, &tally);
     one.push_back(us);
@@ -150,6 +154,7 @@ void runBenchShots(const BenchShotsFlags& flags) {
   }
   if (second) {
     for (const engine::Scene& s : shots) {
+      progress.advance();
       std::size_t count = 0;
       two.push_back(timedRun(s, second, &count, &tally));
     }
@@ -174,7 +179,7 @@ void runBenchShots(const BenchShotsFlags& flags) {
   if (csv) {
     csv->stream() << table.str();
     csv->commit();
-    std::cout << "wrote " << flags.csv_path << '\n';
+    note(std::cout) << "wrote " << flags.csv_path << '\n';
   }
 }
 
