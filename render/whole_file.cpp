@@ -70,6 +70,28 @@ WholeFileTarget wholeFileTarget(const std::string& path) {
 
 std::string temporaryFor(const WholeFileTarget& target) { return target.path + ".tmp"; }
 
+std::error_code makeParentFolders(const std::string& path) {
+  const fs::path file(path);
+  std::error_code error;
+  if (file.has_parent_path()) fs::create_directories(file.parent_path(), error);
+  return error;
+}
+
+void prepareWholeFile(const std::string& path) {
+  const std::error_code error = makeParentFolders(path);
+  const WholeFileTarget target = wholeFileTarget(path);
+  if (target.stream) return;  // written straight: nothing to create beside it
+  const std::string probe = temporaryFor(target);
+  std::FILE* out = std::fopen(probe.c_str(), "wb");
+  if (out == nullptr || error) {
+    if (out != nullptr) std::fclose(out);
+    throw std::invalid_argument("the file cannot be created there" +
+                                (error ? " (" + error.message() + ")" : std::string()));
+  }
+  std::fclose(out);
+  std::remove(probe.c_str());
+}
+
 void writeWholeFile(const std::vector<std::uint8_t>& bytes, const std::string& path) {
   const WholeFileTarget target = wholeFileTarget(path);
   const std::string written = target.stream ? target.path : temporaryFor(target);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace baize::render {
@@ -27,6 +28,15 @@ WholeFileTarget wholeFileTarget(const std::string& path);
 
 // The temporary a whole-file write of `target` uses.
 std::string temporaryFor(const WholeFileTarget& target);
+
+// Makes the missing parent folders of an output at `path` (the rule for every output); returns
+// the error, if any, for the caller's message.
+std::error_code makeParentFolders(const std::string& path);
+
+// Checks before any work that a whole file can be written at `path`, by the one rule every output
+// follows: its missing parent folders are made, and its temporary is created and removed again.
+// Throws std::invalid_argument saying why (without the path) when it cannot be.
+void prepareWholeFile(const std::string& path);
 
 // Writes `bytes` to `path` whole, as above; throws std::runtime_error naming the path when it
 // cannot, leaving no temporary behind.

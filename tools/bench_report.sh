@@ -112,7 +112,7 @@ doc = [
     f"- Commit: {commit}",
     f"- Machine: {cpu}, {os.cpu_count()} cores, load {' '.join(load)} (1, 5, 15 min) at the end",
     "",
-    "**" + headline + "**",
+    "**" + headline.split(" ([docs/benchmarks.md]")[0] + ".**",  # the README's line, without its link here
     "",
     "## Whole shots (`baize bench shots`)",
     "",

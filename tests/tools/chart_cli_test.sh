@@ -159,8 +159,8 @@ expect_error 2 "$work/bad/fig7.csv line 100, column rebound_speed_mps = 'nan' is
 rm "$work/bad/fig7.csv"
 expect_error 2 "fig7.csv: the file cannot be opened" chart sweep "$work/bad"
 [[ -z $(find "$work/bad" -name '*.png*') ]] || fail "a sweep with a missing file left PNG files"
-expect_error 2 "chart width (px) = 10 is not allowed" chart sweep "$work/sweep" --width 10
-expect_error 2 "(set by --height)" chart sweep "$work/sweep" --height 100000
+expect_error 2 "--width = 10 is not allowed" chart sweep "$work/sweep" --width 10
+expect_error 2 "--height = 1e+05 is not allowed" chart sweep "$work/sweep" --height 100000
 
 # A zero error cannot go on a log axis: the message names the table, the series and the axis.
 sed 's/^exact,tol=1e-06,\([^,]*\),.*/exact,tol=1e-06,\1,0/' "$work/bench.csv" >"$work/zero.csv"
@@ -176,9 +176,13 @@ sed 's/^exact,tol=1e-06,\([^,]*\),.*/exact,tol=1e-06,\1,5e-324/' "$work/bench.cs
 expect_error 2 "$work/tiny.csv: log axis low end = 5e-324 is not allowed" \
   chart bench-cushion "$work/tiny.csv" --png "$work/tiny.png"
 [[ ! -e "$work/zero.png" && ! -e "$work/zero.png.tmp" ]] || fail "a refused bench chart left a file"
-expect_error 1 "$work/missing/bench.png" \
-  chart bench-cushion "$work/bench.csv" --png "$work/missing/bench.png"
-[[ ! -e "$work/missing" ]] || fail "an unwritable --png created something"
+# Missing parent folders are made (docs/commands.md); a path under a file is refused before work.
+"$baize" chart bench-cushion "$work/bench.csv" --png "$work/missing/bench.png" >/dev/null ||
+  fail "chart --png in a missing folder exited $?"
+[[ -s "$work/missing/bench.png" ]] || fail "chart --png did not make its folder"
+touch "$work/a-file"
+expect_error 2 "--png = $work/a-file/bench.png is not allowed" \
+  chart bench-cushion "$work/bench.csv" --png "$work/a-file/bench.png"
 expect_error 2 "$work: a directory is not allowed: it must be a CSV file" chart bench-cushion "$work" \
   --png "$work/x.png"
 printf 'solver,setting,median_ns,max_error\nexact,default,5\0,1e-10\n' >"$work/nul.csv"

@@ -148,13 +148,18 @@ expect_error 2 "--topspin = inf is not allowed" cushion --topspin inf
 expect_error 2 "--solver: foo" cushion --solver foo
 expect_error 2 "--steps = 0 is not allowed" cushion --solver paper --steps 0
 expect_error 2 "--tolerance = -1 is not allowed" cushion --tolerance -1
-expect_error 2 "(set by --tolerance)" cushion --solver exact --tolerance 1e-30
+expect_error 2 "--tolerance = 1e-30 is not allowed" cushion --solver exact --tolerance 1e-30
 expect_error 2 "--steps sets the paper solver's increments" cushion --steps 100
 expect_error 2 "--tolerance sets the exact solver's accuracy" cushion --solver paper --tolerance 1e-6
-expect_error 2 "(set by --mu-w)" cushion --mu-w 0.9
-expect_error 2 "(set by --mass)" cushion --mass -0.1
-expect_error 2 "(set by --h)" cushion --h 0.01
-expect_error 2 "baize cushion: error: cushion restitution e_e = 1.5" cushion --e 1.5
+expect_error 2 "--mu-w = 0.9 is not allowed" cushion --mu-w 0.9
+expect_error 2 "--mass = -0.1 is not allowed" cushion --mass -0.1
+expect_error 2 "--h = 0.01 is not allowed" cushion --h 0.01
+expect_error 2 "baize cushion: error: --e = 1.5 is not allowed: it must lie in [1e-06, 1]" cushion --e 1.5
+# Errors name the flag and the value as written, never the model's internal components.
+expect_error 2 "baize cushion: error: --speed = 10000 is not allowed: it must lie in (0, 1000] m/s" \
+  cushion --speed 1e4
+expect_error 2 "--topspin = 1e+09 is not allowed: with --speed 1 and --radius 0.02625" cushion --topspin 1e9
+expect_error 2 "--sidespin = -3e+06 is not allowed" cushion --sidespin -3e6
 expect_error 2 "--json excludes --sweep" cushion --sweep "$work/never" --json "$work/never.json"
 expect_error 2 "--bogus" cushion --bogus
 expect_error 2 "A subcommand is required" bench
@@ -164,12 +169,17 @@ expect_error 2 "--impacts = 2e+09 is not allowed: it must lie in [1, 1000000]" \
   bench cushion --impacts 2000000000
 expect_error 2 "--steps = 2e+09 is not allowed: it must lie in [1, 10000000]" \
   cushion --solver paper --steps 2000000000
-expect_error 2 "ball mass (kg) = -1 is not allowed: it must lie in [0.001, 1000] (set by --mass)" \
+expect_error 2 "--mass = -1 is not allowed: it must lie in [0.001, 1000] (ball mass (kg))" \
   bench cushion --impacts 1 --repeat 1 --mass -1
 expect_error 2 "--mu-s = nan is not allowed" bench cushion --impacts 1 --repeat 1 --mu-s nan
-expect_error 1 "--csv = $work/missing/bench.csv: cannot create" \
-  bench cushion --impacts 1 --repeat 1 --csv "$work/missing/bench.csv"
-[[ ! -e "$work/never" && ! -e "$work/missing" ]] || fail "a refused command left files behind"
+touch "$work/a-file"
+expect_error 1 "--csv = $work/a-file/bench.csv: cannot create" \
+  bench cushion --impacts 1 --repeat 1 --csv "$work/a-file/bench.csv"
+[[ ! -e "$work/never" && ! -e "$work/a-file/bench.csv" ]] || fail "a refused command left files behind"
+# Missing parent folders are made, as for every output (docs/commands.md).
+"$baize" bench cushion --impacts 1 --repeat 1 --csv "$work/missing/bench.csv" >/dev/null ||
+  fail "bench cushion --csv in a missing folder exited $?"
+[[ -s "$work/missing/bench.csv" ]] || fail "bench cushion --csv did not make its folder"
 "$baize" --help >/dev/null || fail "baize --help exited $?"
 "$baize" cushion --help | grep -qF -- "--mu-s" || fail "baize cushion --help does not list --mu-s"
 

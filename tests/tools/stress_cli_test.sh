@@ -205,4 +205,15 @@ status=0
 [[ $status == 2 ]] || fail "--seed -1 exited $status, want 2"
 grep -q -- "--seed: -1 is not allowed: it must be a whole number in \[0, 2^64 - 1\]" "$work/err.txt" ||
   fail "--seed -1: $(cat "$work/err.txt")"
+# Progress (tools/baize/progress): on standard error only when it is a terminal, counting up to the
+# shots asked; none into a file or pipe, none under --quiet. `script` gives the run a terminal.
+script -qec "'$baize' stress --shots 3000 --threads 1" /dev/null >"$work/tty.txt" </dev/null ||
+  fail "stress on a terminal exited $?"
+grep -q "3000 / 3000 shots (100 %)" "$work/tty.txt" || fail "no progress on a terminal: $(od -c "$work/tty.txt" | head)"
+script -qec "'$baize' stress --shots 3000 --threads 1 --quiet" /dev/null >"$work/quiet.txt" </dev/null ||
+  fail "stress --quiet on a terminal exited $?"
+grep -q "shots (" "$work/quiet.txt" && fail "--quiet showed progress"
+grep -q "^stress: shots 3000," "$work/quiet.txt" || fail "--quiet lost the results: $(cat "$work/quiet.txt")"
+"$baize" stress --shots 3000 --threads 1 >/dev/null 2>"$work/pipe.txt" || fail "stress into a file exited $?"
+[[ ! -s "$work/pipe.txt" ]] || fail "progress went into a file: $(cat "$work/pipe.txt")"
 echo "stress CLI checks passed"

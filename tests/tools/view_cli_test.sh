@@ -78,7 +78,6 @@ set +e
 msg=$("$view" "$root/assets/scenes/stun-shot.json" --screenshot "$work/no.png" 2>&1); status=$?
 set -e
 [[ $status -eq 2 ]] || fail "--screenshot without --frames exited $status"
-echo "view CLI: all checks passed"
 
 # No display and no --frames: refused at once naming the way out, not a window nobody sees that
 # spins a core forever (exit 2, within a bounded time).
@@ -90,3 +89,17 @@ set -e
 grep -q "there is no display to show a window on (SDL video driver 'offscreen')" <<<"$out" ||
   fail "no display message: $out"
 grep -q -- "--frames N --screenshot FILE" <<<"$out" || fail "no way out named: $out"
+
+# --screenshot follows the rule of every output (docs/commands.md): missing parent folders made; a
+# path under a file refused before any drawing (exit 2, the flag and the path named).
+"$view" "$root/assets/scenes/9-ball-break.json" --frames 2 --width 64 --height 64 \
+  --screenshot "$work/new/deeper/view.png" >/dev/null || fail "--screenshot in a new folder exited $?"
+[[ -s "$work/new/deeper/view.png" ]] || fail "--screenshot did not make its folder"
+touch "$work/a-file"
+set +e
+out=$("$view" "$root/assets/scenes/9-ball-break.json" --frames 2 --screenshot "$work/a-file/v.png" 2>&1)
+status=$?
+set -e
+[[ $status -eq 2 ]] || fail "--screenshot under a file exited $status (2 expected): $out"
+grep -q -- "--screenshot = $work/a-file/v.png is not allowed" <<<"$out" || fail "message: $out"
+echo "view CLI: all checks passed"

@@ -20,25 +20,17 @@ render::WholeFileTarget outputTarget(const std::string& flag, const std::string&
 }
 
 void checkOutputPath(const std::string& flag, const std::string& path) {
-  const std::filesystem::path file(path);
-  std::error_code error;
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), error);
-  const render::WholeFileTarget target = outputTarget(flag, path);
-  if (target.stream) return;  // written straight: nothing to create beside it
-  const std::string probe = render::temporaryFor(target);
-  std::FILE* out = std::fopen(probe.c_str(), "wb");
-  if (out == nullptr || error) {
-    if (out != nullptr) std::fclose(out);
-    throw UsageError(flag + " = " + path + " is not allowed: the file cannot be created there" +
-                     (error ? " (" + error.message() + ")" : std::string()));
+  try {
+    render::prepareWholeFile(path);
+  } catch (const std::invalid_argument& refused) {
+    throw UsageError(flag + " = " + path + " is not allowed: " + refused.what());
   }
-  std::fclose(out);
-  std::remove(probe.c_str());
 }
 
 AtomicFile::AtomicFile(std::string path, std::string origin)
     : path_(std::move(path)), origin_(std::move(origin)), target_(outputTarget(origin_, path_)) {
   temporary_path_ = target_.stream ? target_.path : render::temporaryFor(target_);
+  if (!target_.stream) render::makeParentFolders(target_.path);
   errno = 0;
   out_.open(temporary_path_, std::ios::out | (target_.stream ? std::ios::app : std::ios::trunc));
   if (!out_) fail("cannot create '" + temporary_path_ + "'");

@@ -24,7 +24,8 @@ void checkOutputPath(const std::string& flag, const std::string& path);
 
 class AtomicFile {
  public:
-  // `origin` says where the path came from (e.g. "--csv"), for error messages.
+  // `origin` says where the path came from (e.g. "--csv"), for error messages. Missing parent
+  // folders are made, as checkOutputPath makes them.
   // Throws UsageError when the path is a directory and std::runtime_error when the temporary
   // cannot be created.
   AtomicFile(std::string path, std::string origin);

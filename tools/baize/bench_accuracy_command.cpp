@@ -20,6 +20,7 @@
 #include "engine/play/random_shots.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/median.h"
 
 namespace baize::tools {
@@ -286,9 +287,10 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
 
   const std::vector<Configuration> configs = configurations();
   std::vector<std::vector<ShotScore>> scores(configs.size(), std::vector<ShotScore>(shots.size()));
+  Progress progress("runs (configuration x shot)", static_cast<long>(configs.size() * shots.size()));
   for (std::size_t c = 0; c < configs.size(); ++c) {
     const Configuration& config = configs[c];
-    for (std::size_t k = 0; k < shots.size(); ++k) {
+    for (std::size_t k = 0; k < shots.size(); ++k, progress.advance()) {
       ShotScore& score = scores[c][k];
       std::vector<double> runs_us;
       std::optional<engine::SimulationResult> result;
@@ -372,7 +374,7 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
   if (csv) {
     csv->stream() << out.str();
     csv->commit();
-    std::cout << "wrote " << flags.csv_path << '\n';
+    note(std::cout) << "wrote " << flags.csv_path << '\n';
   }
 }
 

@@ -14,6 +14,7 @@
 #include "physics/value_text.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/cushion_bench.h"
 #include "tools/baize/cushion_param_flags.h"
 
@@ -180,7 +181,7 @@ void runPromiseSet(const BenchFlags& flags, const physics::CushionParams& params
   if (*csv) {
     (*csv)->stream() << header << '\n' << row.str() << '\n';
     (*csv)->commit();
-    std::cout << "wrote " << flags.csv_path << '\n';
+    note(std::cout) << "wrote " << flags.csv_path << '\n';
   }
 }
 
@@ -250,8 +251,10 @@ void runBench(const BenchFlags& flags) {
   printCushion(params, /*frictions_drawn=*/false);
   const std::string header = "solver,setting,median_ns,max_error";
   bool header_printed = false;
+  Progress progress("solver settings", static_cast<long>(benchSettings().size()));
   const BenchReport report =
       runCushionBench(params, inputs, flags.passes, [&](const BenchRow& row) {
+        progress.advance();
         if (!header_printed) {
           std::cout << header << '\n';
           header_printed = true;
@@ -275,7 +278,7 @@ void runBench(const BenchFlags& flags) {
     csv->stream() << header << '\n';
     for (const BenchRow& row : report.rows) csv->stream() << csvRow(row) << '\n';
     csv->commit();
-    std::cout << "wrote " << flags.csv_path << '\n';
+    note(std::cout) << "wrote " << flags.csv_path << '\n';
   }
 }
 

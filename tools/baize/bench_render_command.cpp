@@ -16,6 +16,7 @@
 #include "render/shot_picture.h"
 #include "render/shot_record.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 
 namespace baize::tools {
 namespace {
@@ -58,7 +59,8 @@ void runBenchRender(const BenchRenderFlags& flags) {
   render::PictureOptions options;
   options.pixel_size_m = render::pixelSizeFor(shot.table, flags.width_px, flags.height_px);
   std::vector<double> picture_ms, draw_ms, png_ms, total_ms;
-  for (int i = 0; i < flags.repeat; ++i) {
+  Progress progress("renders", flags.repeat);
+  for (int i = 0; i < flags.repeat; ++i, progress.advance()) {
     start = std::chrono::steady_clock::now();
     const render::Picture picture = render::buildShotPicture(shot, options);
     const double built = millisecondsSince(start);

@@ -19,6 +19,7 @@
 #include "physics/cushion_rolling_surface.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/median.h"
 
 namespace baize::tools {
@@ -103,10 +104,13 @@ struct RandomShotsTiming {
 // Each shot once per pass (its first run: as a user runs it), one core first, then with the
 // worker if there is one.
 RandomShotsTiming timeShots(const std::vector<engine::Scene>& shots,
-                            engine::CushionImpactWorker* worker, WorkerTally* tally) {
+                            engine::CushionImpactWorker* worker, WorkerTally* tally,
+                            const char* progress_label) {
   std::vector<double> one, two, events;
   RandomShotsTiming timing;
+  Progress progress(progress_label, static_cast<long>(shots.size()) * (worker ? 2 : 1));
   for (const engine::Scene& s : shots) {
+    progress.advance();
     std::size_t count = 0;
     const double us = timedRun(s, nullptr, &count, tally);
     one.push_back(us);
@@ -115,6 +119,7 @@ RandomShotsTiming timeShots(const std::vector<engine::Scene>& shots,
   }
   if (worker) {
     for (const engine::Scene& s : shots) {
+      progress.advance();
       std::size_t count = 0;
       two.push_back(timedRun(s, worker, &count, tally));
     }
@@ -138,7 +143,8 @@ void runBenchShots(const BenchShotsFlags& flags) {
     try {
       physics::validateExactSolverOptions(options);
     } catch (const std::invalid_argument& refused) {
-      throw UsageError(std::string(refused.what()) + " (set by --cushion-tolerance)");
+      throw UsageError(
+          namingTheFlag(refused.what(), "exact solver tolerance", "--cushion-tolerance"));
     }
   }
   // The scenes and random shots, with the tolerance asked for.
@@ -197,8 +203,8 @@ void runBenchShots(const BenchShotsFlags& flags) {
   for (const engine::Scene& s : shots) engine::runScene(s);
   const double warm_up_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
-  const RandomShotsTiming full = timeShots(shots, second, &tally);
-  const RandomShotsTiming simple = timeShots(simple_shots, second, &tally);
+  const RandomShotsTiming full = timeShots(shots, second, &tally, "random shots timed");
+  const RandomShotsTiming simple = timeShots(simple_shots, second, &tally, "random shots with the simple rule timed");
   table << "random-single-shots," << std::setprecision(4) << full.one_core_us << ','
         << full.two_core_wall_us << ',' << full.events << row_end;
   table << "random-single-shots-simple," << std::setprecision(4) << simple.one_core_us << ','
@@ -230,7 +236,7 @@ void runBenchShots(const BenchShotsFlags& flags) {
   if (csv) {
     csv->stream() << table.str();
     csv->commit();
-    std::cout << "wrote " << flags.csv_path << '\n';
+    note(std::cout) << "wrote " << flags.csv_path << '\n';
   }
 }
 

@@ -13,6 +13,7 @@
 #include "tools/baize/accuracy_chart.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/cushion_charts.h"
 
 namespace baize::tools {
@@ -38,7 +39,7 @@ void writeCharts(const std::vector<NamedChart>& charts, const std::string& direc
   for (const NamedChart& named : charts) {
     const std::string path = (std::filesystem::path(directory) / named.file_name).string();
     render::writeChartPng(named.chart, path, flags.width_px, flags.height_px);
-    std::cout << "wrote " << path << '\n';
+    note(std::cout) << "wrote " << path << '\n';
   }
 }
 
@@ -49,8 +50,12 @@ void withContext(const std::string& context, const std::function<void()>& body) 
     body();
   } catch (const std::invalid_argument& rejected) {
     const std::string message = rejected.what();
-    if (message.rfind("chart width", 0) == 0) throw UsageError(message + " (set by --width)");
-    if (message.rfind("chart height", 0) == 0) throw UsageError(message + " (set by --height)");
+    if (message.rfind("chart width (px)", 0) == 0) {
+      throw UsageError(namingTheFlag(message, "chart width (px)", "--width"));
+    }
+    if (message.rfind("chart height (px)", 0) == 0) {
+      throw UsageError(namingTheFlag(message, "chart height (px)", "--height"));
+    }
     // CSV errors name their file already; messages about a chart's data or axes name the chart or
     // the axis, not the file the data came from.
     if (message.rfind(context, 0) == 0) throw;
@@ -103,7 +108,7 @@ void addChartCommand(CLI::App& parent) {
   bench->callback([bench_flags] {
     const ChartFlags& flags = *bench_flags;
     const int status = runReportingErrors("chart bench-cushion", [&] {
-      outputTarget("--png", flags.png_path);  // a path no PNG can go to: refused before work
+      checkOutputPath("--png", flags.png_path);  // parents made; no PNG can go there: refused
       withContext(flags.input, [&] {
         const std::filesystem::path png(flags.png_path);
         writeCharts({{png.filename().string(), cushionBenchChart(flags.input)}},
@@ -126,7 +131,7 @@ void addChartCommand(CLI::App& parent) {
   accuracy->callback([accuracy_flags] {
     const ChartFlags& flags = *accuracy_flags;
     const int status = runReportingErrors("chart bench-accuracy", [&] {
-      outputTarget("--png", flags.png_path);  // a path no PNG can go to: refused before work
+      checkOutputPath("--png", flags.png_path);  // parents made; no PNG can go there: refused
       withContext(flags.input, [&] {
         const std::filesystem::path png(flags.png_path);
         writeCharts({{png.filename().string(), benchAccuracyChart(flags.input)}},

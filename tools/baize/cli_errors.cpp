@@ -17,6 +17,12 @@ void requireFiniteFlag(const std::string& flag, double value) {
   if (!std::isfinite(value)) rejectFlag(flag, value, "it must be a finite number");
 }
 
+std::string namingTheFlag(const std::string& model_message, const std::string& quantity,
+                          const std::string& flag) {
+  if (model_message.rfind(quantity, 0) != 0) return model_message;
+  return flag + model_message.substr(quantity.size()) + " (" + quantity + ")";
+}
+
 int runReportingErrors(const std::string& command, const std::function<void()>& body) {
   const auto report = [&](const std::exception& error, int status) {
     std::cerr << "baize " << command << ": error: " << error.what() << '\n';

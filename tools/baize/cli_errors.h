@@ -28,6 +28,12 @@ class UsageError : public std::runtime_error {
 [[noreturn]] void rejectFlag(const std::string& flag, double value, const std::string& allowed);
 void requireFiniteFlag(const std::string& flag, double value);
 
+// A refusal from the models ("<quantity> = <value> is not allowed: ...") restated as the user wrote
+// it: "<flag> = <value> is not allowed: ... (<quantity>)". Returns the message unchanged when it
+// does not start with `quantity`.
+std::string namingTheFlag(const std::string& model_message, const std::string& quantity,
+                          const std::string& flag);
+
 // Runs a command's body and turns what it throws into the message and exit status above
 // (std::invalid_argument, which the physics throws for inputs outside the model, counts as usage).
 // Returns 0 when the body returns normally and standard output took everything it printed.

@@ -1,6 +1,7 @@
 #include "tools/baize/cushion_command.h"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "physics/value_text.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/cushion_param_flags.h"
 #include "tools/baize/cushion_run.h"
 #include "tools/baize/cushion_sweep.h"
@@ -44,6 +46,10 @@ void validateFlags(const CushionFlags& flags) {
   if (!(shot.angle_deg > 0 && shot.angle_deg < 180)) {
     rejectFlag("--angle", shot.angle_deg,
                "it must lie strictly between 0 and 180 degrees (90 is head-on)");
+  }
+  if (shot.speed_mps > physics::kMaxBallSpeed_mps) {
+    rejectFlag("--speed", shot.speed_mps,
+               "it must lie in (0, " + physics::valueText(physics::kMaxBallSpeed_mps) + "] m/s");
   }
   requireFiniteFlag("--topspin", shot.topspin_k);
   requireFiniteFlag("--sidespin", shot.sidespin_k);
@@ -161,14 +167,16 @@ void writeJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
   file.commit();
 }
 
-// A physics refusal with the flag that set the value named ("... (set by --tolerance)").
-std::string namingTheFlag(const std::string& physics_message) {
+// A physics refusal restated with the flag that set the value ("--tolerance = ...").
+std::string namingTheSolverFlag(const std::string& physics_message) {
   static const std::pair<const char*, const char*> flag_of_quantity[] = {
       {"exact solver tolerance", "--tolerance"},
       {"paper solver steps", "--steps"},
   };
   for (const auto& [quantity, flag] : flag_of_quantity) {
-    if (physics_message.rfind(quantity, 0) == 0) return physics_message + " (set by " + flag + ")";
+    if (physics_message.rfind(quantity, 0) == 0) {
+      return namingTheFlag(physics_message, quantity, flag);
+    }
   }
   return namingTheCushionFlag(physics_message);
 }
@@ -189,15 +197,33 @@ void refuseEnergyGain(const CushionFlags& flags, const physics::BallVelocity& in
                    "(--solver exact) do not have it");
 }
 
+// The spins are given in units of V0/R, so their limit in those units depends on --speed and
+// --radius: the refusal names all three, not the model's angular velocity components.
+void refuseSpinBeyondModel(const CushionFlags& flags) {
+  const double unit_radps = flags.shot.speed_mps / flags.params.radius_m;
+  const double most_k = physics::kMaxBallSpin_radps / unit_radps;
+  for (const auto& [flag, k] : {std::pair<const char*, double>{"--topspin", flags.shot.topspin_k},
+                                {"--sidespin", flags.shot.sidespin_k}}) {
+    if (std::abs(k) > most_k) {
+      rejectFlag(flag, k,
+                 "with --speed " + physics::valueText(flags.shot.speed_mps) + " and --radius " +
+                     physics::valueText(flags.params.radius_m) + " its magnitude must be at most " +
+                     physics::valueText(most_k) + " (a spin of " +
+                     physics::valueText(physics::kMaxBallSpin_radps) + " rad/s)");
+    }
+  }
+}
+
 void solveAndPrint(CushionFlags& flags) {
   flags.setting.kind = flags.solver == "paper" ? SolverKind::Paper : SolverKind::Exact;
   validateFlags(flags);
   flags.params = cushionParamsOf(flags.cushion_flags);
+  refuseSpinBeyondModel(flags);
   if (!flags.json_path.empty()) checkOutputPath("--json", flags.json_path);
   if (flags.sweep_flag->count() > 0) {
     for (const std::string& path :
          writeCushionSweep(flags.sweep_directory, flags.params, flags.setting)) {
-      std::cout << "wrote " << path << '\n';
+      note(std::cout) << "wrote " << path << '\n';
     }
     return;
   }
@@ -213,7 +239,7 @@ void runCushion(CushionFlags& flags) {
   try {
     solveAndPrint(flags);
   } catch (const std::invalid_argument& rejected) {
-    throw UsageError(namingTheFlag(rejected.what()));
+    throw UsageError(namingTheSolverFlag(rejected.what()));
   }
 }
 

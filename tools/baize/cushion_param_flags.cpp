@@ -54,7 +54,7 @@ physics::CushionParams cushionParamsOf(const CushionParamFlags& flags) {
 std::string namingTheCushionFlag(const std::string& physics_message) {
   for (const CushionFlag& f : kCushionFlags) {
     if (physics_message.rfind(f.quantity, 0) == 0) {
-      return physics_message + " (set by " + f.flag + ")";
+      return namingTheFlag(physics_message, f.quantity, f.flag);
     }
   }
   return physics_message;

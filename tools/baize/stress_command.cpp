@@ -302,7 +302,7 @@ void runStress(StressFlags flags) {  // a copy: --threads is resolved in it
     }
   }
   if (!flags.failures_dir.empty() && !tally.failed.empty()) {
-    std::cout << "reproductions: " << tally.failed.size() << " written to " << flags.failures_dir
+    note(std::cout) << "reproductions: " << tally.failed.size() << " written to " << flags.failures_dir
               << ", " << tally.failed.size() - not_reproduced << " fail the same way on replay\n";
   }
   if (stopped_by_budget) {
