@@ -101,11 +101,12 @@ def r4(x):
 # --- A ball's path on the cloth with rails, for the two-rail case -------------------------------
 # Closed forms of physics-notes section 2 (sliding: constant deceleration mu_s g along the fixed slip
 # direction, the spin turning at 5 mu_s g / 2R; rolling: mu_r g along the velocity) between rails;
-# at a rail the simple rule of docs/scenes.md (the normal velocity reverses times 0.91, the measured
-# head-on slope; the velocity along the rail and the spin are kept). This is the naive player's
-# model of a rail; the simulator uses the Mathavan 2010 cushion model, which also turns the ball by the
-# friction at the nose (docs/positional.md compares the two).
-RAIL_RESTITUTION = 0.91
+# at a rail the simple rule of docs/scenes.md (the normal velocity reverses times 0.74, the head-on
+# rebound of a rolling ball on the pool tables' calibrated rails, docs/calibrate.md; the velocity
+# along the rail and the spin are kept). This is the naive player's model of a rail; the simulator
+# uses the Mathavan 2010 cushion model, which also turns the ball by the friction at the nose
+# (docs/positional.md compares the two).
+RAIL_RESTITUTION = 0.74
 
 
 def first_root(a, b, c):

@@ -236,6 +236,8 @@ CushionCalibration calibrateCushion(const std::vector<CushionMeasurement>& measu
   std::vector<std::string> names;
   for (CushionFitParameter p : setup.fitted) names.push_back(fitParameterName(p));
   out.separation_problems = separationProblems(uncertainty, names);
+  for (const std::string& note : poorlyDetermined(uncertainty, fit.x, names))
+    out.separation_problems.push_back(note);
   for (int i = 0; i < n; ++i) {
     out.at_bound.push_back(fit.x[i] <= problem.lower[i] || fit.x[i] >= problem.upper[i]);
   }

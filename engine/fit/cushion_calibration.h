@@ -53,7 +53,8 @@ struct CushionCalibration {
   Eigen::VectorXd standard_deviation;  // inf where the data do not determine them
   Eigen::MatrixXd correlation;         // NaN where undefined
   std::vector<bool> at_bound;          // the value sits on its range's end
-  std::vector<std::string> separation_problems;  // fitParameterNames' separationProblems
+  // fit_uncertainty's separationProblems, then its poorlyDetermined notes
+  std::vector<std::string> separation_problems;
   std::vector<CalibratedPoint> points;           // those fitted, in file order
   int left_out = 0;                              // points above max_speed_mps
   int residual_count = 0;                        // speeds plus the angles measured

@@ -76,4 +76,18 @@ std::vector<std::string> separationProblems(const FitUncertainty& u,
   return problems;
 }
 
+std::vector<std::string> poorlyDetermined(const FitUncertainty& u, const Eigen::VectorXd& values,
+                                          const std::vector<std::string>& names) {
+  std::vector<std::string> notes;
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    const double sd = u.standard_deviation[i];
+    if (std::isfinite(sd) && sd >= kPoorlyDeterminedShare * std::abs(values[i])) {
+      notes.push_back(names[i] + " is poorly determined: its standard deviation " +
+                      physics::valueText(sd) + " is as large as its value " +
+                      physics::valueText(values[i]) + "; the data hardly constrain it");
+    }
+  }
+  return notes;
+}
+
 }  // namespace baize::engine

@@ -29,6 +29,15 @@ struct FitUncertainty {
 
 FitUncertainty fitUncertainty(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& residuals);
 
+// A parameter whose standard deviation reaches this share of its value is reported as poorly
+// determined: the data leave even its size open.
+inline constexpr double kPoorlyDeterminedShare = 1.0;
+
+// Sentences naming the parameters whose sd reaches kPoorlyDeterminedShare of their value.
+std::vector<std::string> poorlyDetermined(const FitUncertainty& uncertainty,
+                                          const Eigen::VectorXd& values,
+                                          const std::vector<std::string>& names);
+
 // Sentences naming the parameters the data cannot separate, and why; empty when they can.
 std::vector<std::string> separationProblems(const FitUncertainty& uncertainty,
                                             const std::vector<std::string>& names);

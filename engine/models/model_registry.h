@@ -85,8 +85,10 @@ class ModelRegistry {
 ModelRegistry<CushionContactModel>& cushionModels();
 ModelRegistry<BallBallContactModel>& ballBallModels();
 
-// Pool defaults throughout: 57.15 mm, 0.17 kg balls, pool cloth, the exact Mathavan 2010 cushion
-// model (nose at 0.635 of the diameter, e_e 0.98, mu_w 0.14), the frictional ball-ball model.
+// Pool balls and cloth: 57.15 mm, 0.17 kg balls, pool cloth, the exact Mathavan 2010 cushion
+// model (nose at 0.635 of the diameter) with the paper's e_e 0.98, mu_w 0.14 (the shipped pool
+// table files carry their calibrated values instead, docs/calibrate.md), the frictional ball-ball
+// model.
 SimulationParams poolSimulationParams();
 // The same balls and cloth with the models the registries make from `defaults`.
 SimulationParams simulationParamsWith(const BallProperties& ball, const physics::ClothParams& cloth,

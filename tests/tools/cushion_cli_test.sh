@@ -312,7 +312,7 @@ assert pool["defaultexact"] <= 1e-9, pool
   >"$work/bench_shots.out" || fail "bench --from-shots exited $?"
 grep -qE "^baize bench cushion: the [1-9][0-9]* cushion and jaw impacts of 4 random single shots" \
   "$work/bench_shots.out" || fail "the shots bench does not count its impacts: $(head -1 "$work/bench_shots.out")"
-grep -qF "cushion: M 0.17 kg, R 0.028575 m, h 0.03629 m, e_e 0.98, mu_w 0.14, mu_s 0.2" \
+grep -qF "cushion: M 0.17 kg, R 0.028575 m, h 0.03629 m, e_e 0.74, mu_w 0.14, mu_s 0.2" \
   "$work/bench_shots.out" || fail "the shots bench does not name its table's cushion"
 check_python '
 pool = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[1])}

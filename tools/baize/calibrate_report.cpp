@@ -41,13 +41,13 @@ double speedResidual(const engine::CalibratedPoint& p) {
 void printPoint(const engine::CalibratedPoint& p, std::ostream& out) {
   const engine::CushionMeasurement& m = p.measured;
   out << "  " << std::setw(5) << m.line << std::setw(9) << m.speed_mps << std::setw(8)
-      << m.angle_deg << std::setw(8) << m.topspin_k << std::setw(8) << m.sidespin_k << std::setw(10)
-      << m.rebound_speed_mps << std::setw(10) << p.fitted_speed_mps << std::setw(11)
-      << speedResidual(p);
+      << m.angle_deg << std::setw(8) << m.topspin_k << std::setw(9) << m.sidespin_k << std::fixed
+      << std::setprecision(4) << std::setw(10) << m.rebound_speed_mps << std::setw(10)
+      << p.fitted_speed_mps << std::setw(10) << speedResidual(p) << std::setprecision(2);
   if (m.rebound_angle_deg) {
-    out << std::setw(10) << *m.rebound_angle_deg << std::setw(10) << p.fitted_angle_deg;
+    out << std::setw(9) << *m.rebound_angle_deg << std::setw(9) << p.fitted_angle_deg;
   }
-  out << '\n';
+  out << std::defaultfloat << std::setprecision(6) << '\n';
 }
 
 void printPoints(const engine::CushionCalibration& fit, std::ostream& out) {
@@ -62,8 +62,8 @@ void printPoints(const engine::CushionCalibration& fit, std::ostream& out) {
   } else {
     out << "points:\n";
   }
-  out << "   line  V0 m/s   alpha  topspin sidespin  measured    fitted  residual   angle   "
-         "fitted\n";
+  out << "   line   V0 m/s   alpha topspin sidespin  measured    fitted  residual"
+      << "    angle   fitted\n";
   for (size_t i : order) printPoint(fit.points[i], out);
 }
 

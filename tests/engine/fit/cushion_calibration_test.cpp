@@ -104,8 +104,9 @@ TEST(CushionCalibration, HeadOnRollingDataDoesNotSeparateRestitutionAndFriction)
   CushionCalibrationSetup setup;
   setup.start = poolCushion(0.95, 0.1);
   const CushionCalibration fit = calibrateCushion(data, setup);
-  ASSERT_EQ(fit.separation_problems.size(), 1u);
-  EXPECT_NE(fit.separation_problems[0].find("restitution and friction"), std::string::npos)
+  ASSERT_GE(fit.separation_problems.size(), 1u);  // then the sds may say each is poorly determined
+  EXPECT_NE(fit.separation_problems[0].find("cannot separate restitution and friction"),
+            std::string::npos)
       << fit.separation_problems[0];
 }
 
@@ -165,7 +166,64 @@ TEST(CushionCalibration, ThePapersSnookerDataAgreeWithItsValues) {
   EXPECT_LT(std::abs(fit.values[0] - 0.98), 2 * fit.standard_deviation[0]);
   EXPECT_LT(fit.standard_deviation[0], 0.03);  // the data do say something
   setup.fitted = {CushionFitParameter::Restitution, CushionFitParameter::Friction};
-  EXPECT_EQ(calibrateCushion(data, setup).separation_problems.size(), 1u);
+  const CushionCalibration both = calibrateCushion(data, setup);
+  ASSERT_GE(both.separation_problems.size(), 1u);
+  EXPECT_NE(both.separation_problems[0].find("cannot separate restitution and friction"),
+            std::string::npos);
+}
+
+// The pool tables ship e_e fitted to the published pool figures with mu_w held at 0.14
+// (docs/calibrate.md): fitting again gives the shipped value to its rounding.
+TEST(CushionCalibration, PoolTablesCarryTheValueFittedToThePoolFigures) {
+  const auto data =
+      readCushionMeasurements(assetsDirectory() + "/measurements/pool-rail-figures.csv");
+  for (const std::string& name : {"pool-7ft", "pool-8ft", "pool-9ft"}) {
+    const Table table = builtinTable(name);
+    CushionCalibrationSetup setup;
+    setup.start = calibrationStart(table, builtinBallSet("pool"));
+    setup.fitted = {CushionFitParameter::Restitution};
+    const CushionCalibration fit = calibrateCushion(data, setup);
+    EXPECT_NEAR(table.cushion_restitution, fit.values[0], 0.005) << name;  // shipped to 2 digits
+    EXPECT_EQ(table.cushion_friction, 0.14) << name;
+    // The figures' spread: a few hundredths to a tenth.
+    EXPECT_GT(fit.standard_deviation[0], 0.02);
+    EXPECT_LT(fit.standard_deviation[0], 0.15);
+  }
+}
+
+physics::CushionImpactResult poolRail(double angle_deg, double topspin, double sidespin) {
+  const physics::CushionParams p =
+      calibrationStart(builtinTable("pool-9ft"), builtinBallSet("pool"));
+  const double unit = 1.0 / p.radius_m;  // V0 = 1 m/s
+  return physics::solveCushionImpactExact(
+      p, physics::incomingBall(1, angle_deg * kPi / 180, topspin * unit, sidespin * unit));
+}
+
+// A ball rolling head-on into a pool rail at the pool defaults comes back at about 0.7 of its
+// speed (Alciatore's figure; within the fit's sd of it) close to stun: its spin about the axis
+// across its new path is well under half of rolling (it arrives with 1, rolling the other way).
+TEST(CushionCalibration, ARollingBallLeavesAPoolRailNearStun) {
+  const physics::CushionImpactResult r = poolRail(90, 1, 0);
+  const double rebound_mps = -r.after.v.y();
+  EXPECT_NEAR(rebound_mps, 0.7, 0.084);
+  const double radius_m = builtinBallSet("pool").radius_m;
+  // Rolling away (toward -y) would be w_x = +v/R; the spin left is a share of that.
+  const double rolling_share = r.after.w.x() * radius_m / rebound_mps;
+  EXPECT_LT(std::abs(rolling_share), 0.5) << rolling_share;
+}
+
+// Running english (sidespin with the ball's motion along the rail) sends a rolling ball off a
+// pool rail at a wider angle, along the rail; reverse english shortens it.
+TEST(CushionCalibration, EnglishTurnsThePoolReboundTheWayPlayersKnow) {
+  const auto angle = [](const physics::CushionImpactResult& r) {
+    return std::atan2(-r.after.v.y(), r.after.v.x()) * 180 / kPi;
+  };
+  const double running = angle(poolRail(45, 1, 1));
+  const double none = angle(poolRail(45, 1, 0));
+  const double reverse = angle(poolRail(45, 1, -1));
+  EXPECT_LT(running, none - 3);
+  EXPECT_GT(reverse, none + 1);
+  EXPECT_LT(none, 45);  // a rolling ball comes off flatter than it came in
 }
 
 TEST(CushionCalibration, ParameterNamesAreTheSceneKeys) {

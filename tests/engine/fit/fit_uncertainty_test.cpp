@@ -47,5 +47,14 @@ TEST(FitUncertainty, ASingularJacobianLeavesTheParametersUndetermined) {
   EXPECT_EQ(separationProblems(u, {"a", "b"}).size(), 1u);
 }
 
+TEST(FitUncertainty, NamesAParameterWhoseSdReachesItsValue) {
+  FitUncertainty u;
+  u.standard_deviation = Eigen::Vector2d(0.01, 0.3);
+  EXPECT_TRUE(poorlyDetermined(u, Eigen::Vector2d(0.7, 0.31), {"a", "b"}).empty());
+  const auto notes = poorlyDetermined(u, Eigen::Vector2d(0.7, 0.2), {"a", "b"});
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0].rfind("b is poorly determined", 0), 0u) << notes[0];
+}
+
 }  // namespace
 }  // namespace baize::engine
