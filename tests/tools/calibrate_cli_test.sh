@@ -37,7 +37,7 @@ expect_refused() {
   echo "speed_mps,angle_deg,topspin,sidespin,rebound_speed_mps,rebound_angle_deg"
   for angle in 30 60 90; do
     for topspin in 0 1; do
-      "$baize" cushion --json --speed 1 --angle $angle --topspin $topspin --mass 0.17 \
+      "$baize" cushion --json - --speed 1 --angle $angle --topspin $topspin --mass 0.17 \
         --radius 0.028575 --h 0.03629 --mu-s 0.2 --e 0.8 --mu-w 0.2 |
         python3 -c "import json,sys; d=json.load(sys.stdin); print(f\"1,$angle,$topspin,0,{d['speed']!r},{d['angle_deg']!r}\")"
     done

@@ -100,12 +100,16 @@ if count == 0:
     sys.exit("no commands found: the docs test reads ```sh blocks")
 PY
 
+# The longest a docs example may take (s): the slowest runs a few seconds; far above that, stop.
+command_limit_s=120
 ran=0
 for command in "$work"/commands/*.sh; do
   where=$(head -1 "$command" | cut -c3-)
   status=0
   started=$(date +%s%N)
-  (cd "$work" && bash -eo pipefail "$command") >"$work/output.txt" 2>&1 </dev/null || status=$?
+  # A docs example that waits for ever (a server, a window) is a broken example, not a hang.
+  (cd "$work" && timeout "$command_limit_s" bash -eo pipefail "$command") >"$work/output.txt" 2>&1 </dev/null ||
+    status=$?
   echo "$(( ($(date +%s%N) - started) / 1000000 )) ms $where" >>"$work/times.txt"
   # A check that finds a failing case exits 1 by design; the docs' suites all pass, so any
   # non-zero status is a broken example.

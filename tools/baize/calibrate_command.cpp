@@ -16,6 +16,7 @@
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/calibrate_report.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/thread_flag.h"
 
 namespace baize::tools {
@@ -36,7 +37,6 @@ struct CalibrateFlags {
   int threads = 0;
   std::string png_path;
   std::string json_path;
-  bool quiet = false;
 };
 
 // A shipped name, else a file.
@@ -97,21 +97,19 @@ void checkFlags(const CalibrateFlags& flags) {
   requireFiniteFlag("--max-speed", flags.max_speed_mps);
   if (!(flags.max_speed_mps > 0)) rejectFlag("--max-speed", flags.max_speed_mps, "it must be > 0 (m/s)");
   if (!flags.png_path.empty()) checkOutputPath("--png", flags.png_path);
-  if (!flags.json_path.empty() && flags.json_path != "-") checkOutputPath("--json", flags.json_path);
+  if (!flags.json_path.empty()) checkOutputPath("--json", flags.json_path);
 }
 
 void writeOutputs(const CalibrateFlags& flags, const engine::CushionCalibration& fit) {
   if (!flags.png_path.empty()) {
     render::writeChartPng(calibrationChart(fit), flags.png_path, kChartWidthPx, kChartHeightPx);
-    if (!flags.quiet && flags.json_path != "-") std::cout << "wrote " << flags.png_path << '\n';
+    note(std::cout) << "wrote " << flags.png_path << '\n';
   }
-  if (flags.json_path == "-") {
-    std::cout << calibrationJson(fit).dump(2) << '\n';
-  } else if (!flags.json_path.empty()) {
+  if (!flags.json_path.empty()) {
     AtomicFile file(flags.json_path, "--json");
     file.stream() << calibrationJson(fit).dump(2) << '\n';
     file.commit();
-    if (!flags.quiet) std::cout << "wrote " << flags.json_path << '\n';
+    if (flags.json_path != "-") note(std::cout) << "wrote " << flags.json_path << '\n';
   }
 }
 
@@ -130,8 +128,8 @@ void runCalibrate(const CalibrateFlags& flags) {
     throw UsageError(flags.data + ": " + refused.what() + " (--max-speed " +
                      physics::valueText(flags.max_speed_mps) + ", --fit " + flags.fit + ")");
   }
-  // With the JSON on standard output, the text would spoil it.
-  if (!flags.quiet && flags.json_path != "-") printCalibration(fit, std::cout);
+  // With the JSON on standard output this goes to standard error (tools/baize/standard_output.h).
+  if (!quiet()) printCalibration(fit, std::cout);
   writeOutputs(flags, fit);
 }
 
@@ -176,7 +174,6 @@ void addCalibrateCommand(CLI::App& parent) {
   command->add_option("--json", flags->json_path,
                       "write the fit as JSON to this file ('-': standard output, instead of the text)")
       ->check(notEmpty());
-  command->add_flag("--quiet", flags->quiet, "print nothing but errors (and --json -)");
   command->callback([flags] {
     if (const int status = runReportingErrors("calibrate", [&] { runCalibrate(*flags); })) {
       throw CLI::RuntimeError(status);

@@ -12,11 +12,16 @@
 #include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/output_folder.h"
 #include "tools/baize/overlay_pictures.h"
+#include "tools/baize/progress.h"
 #include "tools/baize/shot_file.h"
 
 namespace baize::tools {
 namespace {
+
+// The pictures --png-dir gets, one per shot: shot_NNN.png.
+const OutputFileNames kShotPictureNames{"shot_", ".png"};
 
 // The most shots one frame may take: far beyond any real frame, a bound on a typo.
 constexpr int kMaxShotsAllowed = 10000;
@@ -28,7 +33,6 @@ struct PlayFlags {
   std::string log_path;
   std::string shots_path;
   std::string png_dir;
-  bool quiet = false;
   int max_shots = 400;
 };
 
@@ -49,13 +53,7 @@ void checkFlags(const PlayFlags& flags) {
   }
   if (!flags.log_path.empty() && flags.log_path != "-") checkOutputPath("--log", flags.log_path);
   if (!flags.png_dir.empty()) {
-    std::error_code error;
-    std::filesystem::create_directories(flags.png_dir, error);
-    if (!std::filesystem::is_directory(flags.png_dir, error)) {
-      throw UsageError("--png-dir = " + flags.png_dir +
-                       " is not allowed: it must be a directory (made if missing)");
-    }
-    checkOutputPath("--png-dir", (std::filesystem::path(flags.png_dir) / "probe.png").string());
+    prepareOutputFolder("--png-dir", flags.png_dir, kShotPictureNames);
   }
 }
 
@@ -75,10 +73,6 @@ void writeLog(const engine::PlayedFrame& frame, const std::string& path) {
   for (std::size_t i = 0; i < frame.shots.size(); ++i) {
     text << engine::playedShotJson(frame.shots[i], static_cast<int>(i)).dump() << "\n";
   }
-  if (path == "-") {
-    std::cout << text.str();
-    return;
-  }
   AtomicFile file(path, "--log");
   file.stream() << text.str();
   file.commit();
@@ -97,7 +91,7 @@ void writePictures(const engine::GameSetup& setup, const engine::PlayedFrame& fr
     if (!shot.ran) continue;  // a miscue: nothing moved
     const engine::SceneRun run = engine::runScene(scene, true);
     std::ostringstream name;
-    name << "shot_" << std::setw(3) << std::setfill('0') << i << ".png";
+    name << kShotPictureNames.prefix << std::setw(3) << std::setfill('0') << i << kShotPictureNames.suffix;
     painter.write(shotPicture(scene, run, pixel_m), (std::filesystem::path(dir) / name.str()).string());
   }
 }
@@ -136,7 +130,7 @@ void runPlay(const PlayFlags& flags) {
   const engine::PlayedFrame frame = engine::playFrame(setup, options, source);
   if (!flags.png_dir.empty()) writePictures(setup, frame, flags.png_dir);
   if (!flags.log_path.empty()) writeLog(frame, flags.log_path);
-  if (!flags.quiet && flags.log_path != "-") printSummary(frame, game);
+  if (!quiet()) printSummary(frame, game);
 }
 
 }  // namespace
@@ -165,7 +159,6 @@ void addPlayCommand(CLI::App& parent) {
       ->check(notEmpty());
   command->add_option("--max-shots", flags->max_shots,
                       "stop a frame not over after this many shots (default 400)");
-  command->add_flag("--quiet", flags->quiet, "print no summary");
   command->callback([flags] {
     if (const int status = runReportingErrors("play", [&] { runPlay(*flags); })) {
       throw CLI::RuntimeError(status);

@@ -10,8 +10,8 @@ namespace baize::tools {
 namespace {
 
 // Every flag whose value is an output file.
-constexpr std::array<const char*, 5> kOutputFileFlags = {"--json", "--csv", "--junit", "--png",
-                                                         "--gif"};
+constexpr std::array<const char*, 6> kOutputFileFlags = {"--json", "--csv", "--junit", "--png",
+                                                         "--gif",  "--log"};
 
 }  // namespace
 
