@@ -11,7 +11,7 @@
 #include "physics/cushion_event_location.h"
 #include "physics/value_text.h"
 
-// How the solver works (the derivation is in docs/cushion.md).
+// How the solver works (the derivation is in docs/cushion-solvers.md).
 //
 // Write a = -(friction impulse rate at I) in the basis (x, Y') and b = -(friction impulse rate at
 // C) in (x, y), both per unit of P. While both contacts slip, a = mu_w (cos Phi, sin Phi) and b =
@@ -36,7 +36,7 @@
 // contact whose cone stops holding it (an event) slips along the friction it needed, so friction
 // stays continuous.
 //
-// Four special cases cut the cost where the general machinery is slow (docs/cushion.md, "Cost"):
+// Four special cases cut the cost where the general machinery is slow (docs/cushion-solvers.md, "Cost"):
 // the cloth contact's phi* while the nose slides is r0 / |r0| in closed form (its own friction
 // enters its slip rate isotropically); a slip growing from rest while the other contact slides
 // follows a held law corrected for the lag of its direction behind phi*; a slip falling along its

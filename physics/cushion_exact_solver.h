@@ -6,7 +6,7 @@
 // direction in which its slip grows along itself. Near a vanishing slip, where the friction
 // direction turns arbitrarily fast, the independent variable is rescaled so that the slip decays
 // smoothly instead of being stepped across. See the top of cushion_exact_solver.cpp for the method
-// and docs/cushion.md for its derivation.
+// and docs/cushion-solvers.md for its derivation.
 #pragma once
 
 #include "physics/cushion_model.h"

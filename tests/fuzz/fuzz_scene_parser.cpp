@@ -86,7 +86,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       after += physics::specificKineticEnergy(params.cloth, b);
     fuzz::check(std::isfinite(after), "non-finite energy after an event");
     // The paper's Euler scheme at few steps may add energy at a cushion (first order:
-    // docs/cushion.md); the other models may not.
+    // docs/cushion-solvers.md); the other models may not.
     const bool euler_cushion =
         paper && (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw);
     fuzz::check(

@@ -102,7 +102,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const BallState& b : e.before) before += phys::specificKineticEnergy(p.cloth, b);
     for (const BallState& b : e.after) after += phys::specificKineticEnergy(p.cloth, b);
     // The paper's Euler scheme at a few hundred steps may add energy at a cushion (first order:
-    // docs/cushion.md); the other models may not.
+    // docs/cushion-solvers.md); the other models may not.
     const bool euler_cushion =
         std::string(p.cushion->name()) == "paper" &&
         (e.kind == engine::EventKind::Cushion || e.kind == engine::EventKind::Jaw);

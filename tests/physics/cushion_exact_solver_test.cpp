@@ -422,7 +422,7 @@ TEST(CushionExactSolver, ASlipPassingCloseByZeroIsNotCrossedInOneStep) {
   }
 }
 
-// Regression (docs/cushion.md, "Known: a stalled slip on a grippy cushion"): on a grippy snooker
+// Regression (docs/cushion-solvers.md, "Known: a stalled slip on a grippy cushion"): on a grippy snooker
 // cushion the nose slip falls along its line at a hundred-thousandth of its friction's scale, and
 // in tau the solver crawled until it ran out of steps at the default tolerance (and at 1e-11 to
 // 4e-11). With the step cap and a growing slip run in P it ended here but failed at 1e-13; it has

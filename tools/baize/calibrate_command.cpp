@@ -172,7 +172,7 @@ void addCalibrateCommand(CLI::App& parent) {
   command->add_option("--png", flags->png_path, "write a chart of measured and fitted rebound speeds")
       ->check(notEmpty());
   command->add_option("--json", flags->json_path,
-                      "write the fit as JSON to this file ('-': standard output, instead of the text)")
+                      "write the fit as JSON to this file ('-': standard output; the text report then goes to standard error)")
       ->check(notEmpty());
   command->callback([flags] {
     if (const int status = runReportingErrors("calibrate", [&] { runCalibrate(*flags); })) {
