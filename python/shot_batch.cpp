@@ -112,14 +112,15 @@ py::list simulateMany(const py::iterable& scenes_in, int threads, const std::str
 }
 
 // The wall time of each of `repeats` runs of the shot in C++ alone (what simulate() does without
-// Python), ns: the reference of tools/bench_python.py's binding-overhead ratio.
+// Python, the result made and freed), ns: the reference of tools/bench_python.py's binding-overhead ratio.
 std::vector<double> nativeRunTimes(const engine::Scene& scene, int repeats) {
   if (repeats < 1) throw py::value_error("repeats = " + std::to_string(repeats) + " must be >= 1");
   const py::gil_scoped_release released;
   std::vector<double> times_ns;
   for (int k = 0; k < repeats; ++k) {
+    // The result's whole life, as in the Python loop, which drops each result as it goes.
     const auto start = std::chrono::steady_clock::now();
-    const ShotRun shot = runShot(scene);
+    { const ShotRun shot = runShot(scene); }
     const auto stop = std::chrono::steady_clock::now();
     times_ns.push_back(std::chrono::duration<double, std::nano>(stop - start).count());
   }
