@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "engine/io/result_file.h"
+#include "engine/play/model_range.h"
 #include "python/result_pickle.h"
 
 namespace baize::python {
@@ -87,6 +88,7 @@ ShotRun runShot(const engine::Scene& scene) {
   shot.run = engine::runScene(scene, /*record_trajectories=*/true);
   shot.outcome = engine::shotOutcome(shot.run, scene.cue_ball);
   shot.cloth = engine::simulationParamsFor(scene).cloth;
+  shot.beyond_model_range = engine::impactsBeyondModelRange(scene, shot.run);
   return shot;
 }
 
@@ -128,6 +130,9 @@ void bindResult(py::module_& module) {
       .def_property_readonly(
           "foul", [](const ShotRun& s) { return std::string(engine::foulName(s.outcome.foul)); },
           "'none', or the foul the shot made")
+      .def_readonly("beyond_model_range", &ShotRun::beyond_model_range,
+                    "indices into events of the cushion and jaw impacts faster than the scene's "
+                    "physics.cushion.valid_normal_speed_mps (the cushion model's stated range)")
       .def_property_readonly(
           "end_time", [](const ShotRun& s) { return s.run.result.end_time_s; },
           "when the last ball stopped or fell, s")

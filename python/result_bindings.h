@@ -17,6 +17,8 @@ struct ShotRun {
   engine::SceneRun run;  // with its trajectories, for sample()
   engine::ShotOutcome outcome;
   physics::ClothParams cloth;  // the cloth the balls moved on, for sample()
+  // Event indices of the impacts beyond the cushion model's range (engine/play/model_range.h).
+  std::vector<long> beyond_model_range;
 };
 
 // Strikes and simulates the scene to rest, recording trajectories. Needs no Python (callable with

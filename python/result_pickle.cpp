@@ -9,7 +9,7 @@ namespace baize::python {
 namespace {
 
 // Bumped whenever the layout below changes: an old pickle is refused, not misread.
-constexpr std::int64_t kLayoutVersion = 1;
+constexpr std::int64_t kLayoutVersion = 2;
 
 class Writer {
  public:
@@ -121,6 +121,8 @@ std::string shotRunBytes(const ShotRun& shot) {
       w.integer(p.pocketed);
     }
   }
+  w.integer(static_cast<std::int64_t>(shot.beyond_model_range.size()));
+  for (long index : shot.beyond_model_range) w.integer(index);
   return w.take();
 }
 
@@ -173,6 +175,11 @@ ShotRun shotRunFromBytes(const std::string& bytes) {
       p.state = r.state();
       p.pocketed = r.integer() != 0;
     }
+  }
+  shot.beyond_model_range.resize(r.count(8));
+  for (long& index : shot.beyond_model_range) {
+    index = static_cast<long>(r.integer());
+    if (index < 0 || static_cast<std::size_t>(index) >= result.events.size()) Reader::bad();
   }
   if (!r.done() || result.final_balls.size() != shot.run.ball_ids.size()) Reader::bad();
   try {

@@ -98,7 +98,7 @@ class ResultReader {
     top_.requireKeys({"format", "version", "source", "scene", "physics", "end_time_s",
                       "first_ball_hit", "cushions_before_first_hit", "pocketed", "foul",
                       "event_count", "final_positions_m", "cushion_contacts", "predictions"},
-                     {"line", "id", "trajectories", "events", "samples"});
+                     {"line", "id", "trajectories", "events", "samples", "beyond_model_range"});
     r_.source = top_.text("source");
     if (top_.has("line")) r_.line = count(top_, "line", 1);
     if (top_.has("id")) r_.id = top_.json().at("id");
@@ -113,6 +113,7 @@ class ResultReader {
     if (top_.has("trajectories")) readTrajectories();
     if (top_.has("events")) readEvents();
     if (top_.has("samples")) readSamples();
+    if (top_.has("beyond_model_range")) readBeyondModelRange();
     return std::move(r_);
   }
 
@@ -291,6 +292,20 @@ class ResultReader {
     r_.predictions_skipped = count(predictions, "skipped");
   }
 
+  // Event indices, increasing, each below event_count (which events they are is the writer's).
+  void readBeyondModelRange() {
+    forEach(top_, "beyond_model_range", [&](const nlohmann::json& item, const std::string& path) {
+      const long previous = r_.beyond_model_range.empty() ? -1 : r_.beyond_model_range.back();
+      if (!item.is_number_integer() || item.get<long>() <= previous ||
+          item.get<long>() >= r_.event_count) {
+        throw std::invalid_argument(source_ + ": " + path + " = " + item.dump() +
+                                    " is not allowed: it must be an event index, below "
+                                    "event_count and above the index before it");
+      }
+      r_.beyond_model_range.push_back(item.get<long>());
+    });
+  }
+
   void readTrajectories() {
     std::vector<Trajectory> trajectories;
     forEachBall("trajectories", [&](const JsonReader& balls, const std::string& id) {
@@ -453,6 +468,7 @@ nlohmann::json resultJson(const ShotResult& r) {
   out["foul"] = foulName(r.foul);
   out["event_count"] = r.event_count;
   out["predictions"] = {{"solved", r.predictions_solved}, {"skipped", r.predictions_skipped}};
+  out["beyond_model_range"] = r.beyond_model_range;
   out["final_positions_m"] = nlohmann::json::object();
   out["cushion_contacts"] = nlohmann::json::object();
   for (std::size_t i = 0; i < ids.size(); ++i) {

@@ -60,6 +60,9 @@ struct ShotResult {
   long event_count = 0;
   std::vector<std::optional<Eigen::Vector2d>> final_positions_m;  // per ball; none: pocketed
   std::vector<int> cushion_contacts;                              // per ball, cushions and jaws
+  // Indices of the cushion and jaw events whose normal speed was above the scene's
+  // physics.cushion.valid_normal_speed_mps (engine/play/model_range.h), in order.
+  std::vector<long> beyond_model_range;
   long predictions_solved = 0;
   long predictions_skipped = 0;
   std::optional<std::vector<Trajectory>> trajectories;  // per ball, when recorded

@@ -32,6 +32,20 @@ nlohmann::json readModelGroup(const ModelRegistry<Model>& registry, const JsonRe
   return group.json();
 }
 
+// physics.cushion without valid_normal_speed_mps (kept in `o`, checked here: it belongs to no
+// model); empty when the group gave nothing else, so the table's cushion model stays.
+std::optional<nlohmann::json> readCushionGroup(const JsonReader& cushion, PhysicsOverrides* o) {
+  nlohmann::json model_keys = cushion.json();
+  if (cushion.has(kValidNormalSpeedKey)) {
+    const double limit = cushion.finiteNumber(kValidNormalSpeedKey);
+    if (!(limit > 0)) cushion.reject(kValidNormalSpeedKey, "it must be a speed above 0 m/s");
+    o->valid_normal_speed_mps = limit;
+    model_keys.erase(kValidNormalSpeedKey);
+  }
+  if (model_keys.empty()) return std::nullopt;
+  return readModelGroup(cushionModels(), JsonReader(model_keys, cushion.source(), cushion.path()));
+}
+
 void readCue(const JsonReader& cue, PhysicsOverrides* o) {
   cue.requireKeys({}, {"mass_kg", "tip_restitution", "squirt_end_mass_kg"});
   o->cue_mass_kg = number(cue, "mass_kg");
@@ -65,7 +79,7 @@ PhysicsOverrides readPhysicsOverrides(const JsonReader& physics) {
   if (physics.has("cloth")) readCloth(physics.object("cloth"), &o);
   o.source = physics.source();
   if (physics.has("cushion"))
-    o.cushion = readModelGroup(cushionModels(), physics.object("cushion"));
+    o.cushion = readCushionGroup(physics.object("cushion"), &o);
   if (physics.has("ball_ball"))
     o.ball_ball = readModelGroup(ballBallModels(), physics.object("ball_ball"));
   if (physics.has("cue")) readCue(physics.object("cue"), &o);

@@ -16,6 +16,11 @@
 
 namespace baize::engine {
 
+// The normal speed (m/s, the ball's velocity into the cushion) up to which Mathavan, Jackson &
+// Parkin (2010) state their rigid-cushion model holds; impacts above it are reported, not changed.
+inline constexpr double kRigidCushionValidNormalSpeedMps = 2.5;
+inline constexpr const char* kValidNormalSpeedKey = "valid_normal_speed_mps";
+
 // What a scene overrides; an empty field keeps the default of the table and ball set. Units as in
 // the parameter structs they map to.
 struct PhysicsOverrides {
@@ -28,6 +33,10 @@ struct PhysicsOverrides {
   // registries (engine/models/model_registry.h) make the models from them.
   std::optional<nlohmann::json> cushion;
   std::optional<nlohmann::json> ball_ball;
+  // physics.cushion.valid_normal_speed_mps: the normal speed up to which the cushion model is
+  // taken to hold (kRigidCushionValidNormalSpeedMps when not given). Read apart from the model's
+  // keys: it changes no result, only which impacts are reported beyond the model's range.
+  std::optional<double> valid_normal_speed_mps;
   std::string source;  // the file they came from, for messages
   // physics.cue -> physics::CueStrikeParams
   std::optional<double> cue_mass_kg;

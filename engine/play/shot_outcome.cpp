@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "engine/play/model_range.h"
+
 namespace baize::engine {
 
 const FinalBall* ShotOutcome::ball(const std::string& id) const {
@@ -80,6 +82,7 @@ ShotResult shotResult(Scene scene, const SceneRun& run, bool with_recording) {
     r.final_positions_m.push_back(b.pocketed ? std::nullopt : std::optional(b.position_m));
     r.cushion_contacts.push_back(b.cushion_contacts);
   }
+  r.beyond_model_range = impactsBeyondModelRange(r.scene, run);
   r.predictions_solved = run.result.predictions;
   r.predictions_skipped = run.result.skipped_predictions;
   if (with_recording) {

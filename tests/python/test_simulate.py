@@ -59,6 +59,28 @@ def test_results_pickle_to_the_same_bits(stun):
     assert copy.sample(times).tobytes() == stun.sample(times).tobytes()
 
 
+def test_a_break_lists_its_impacts_beyond_the_cushion_models_range(scenes_dir):
+    scene = baize.load_scene(str(scenes_dir / "8-ball-break.json"))
+    result = baize.simulate(scene)
+    beyond = result.beyond_model_range
+    assert beyond and beyond == sorted(beyond), beyond
+    assert all(result.events[i].kind in ("cushion", "jaw") for i in beyond)
+    assert pickle.loads(pickle.dumps(result)).beyond_model_range == beyond
+
+
+def test_the_scenes_limit_changes_the_count():
+    def beyond(physics):
+        return baize.simulate(baize.Scene(table="pool-9ft", ball_set="pool", rack={"name": "9-ball"},
+                                          shot={"aim_at": "1", "speed_mps": 8},
+                                          physics=physics)).beyond_model_range
+    assert beyond({}), "an 8 m/s break hits a cushion above 2.5 m/s"
+    assert beyond({"cushion": {"valid_normal_speed_mps": 100}}) == []
+
+
+def test_a_soft_shot_has_none_beyond_the_models_range(stun):
+    assert stun.beyond_model_range == []
+
+
 def test_a_shot_that_cannot_finish_raises(scenes_dir):
     scene = baize.Scene(table="pool-9ft", ball_set="pool", rack={"name": "9-ball"},
                         shot={"aim_at": "1", "speed_mps": 8}, physics={"max_events": 3})

@@ -296,4 +296,37 @@ if [[ -w /dev/full ]]; then
   set -e
   [[ $status -eq 1 ]] || fail "--help > /dev/full exited $status, expected 1"
 fi
+# Impacts beyond the cushion model's range: the summary line counts the result's
+# "beyond_model_range" (cushion and jaw events faster than the limit); the scene's limit changes it.
+out=$("$baize" simulate "$root/assets/scenes/8-ball-break.json" --json "$work/range.json") ||
+  fail "8-ball break exited $?"
+line=$(grep "^beyond the cushion model's range: " <<<"$out") || fail "no range line: $out"
+python3 - "$work/range.json" "$line" <<'PY'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+beyond = d["beyond_model_range"]
+assert beyond, "a break hits cushions above 2.5 m/s"
+assert sys.argv[2] == f"beyond the cushion model's range: {len(beyond)} impact{'s' if len(beyond) != 1 else ''} (normal speed above 2.5 m/s)", sys.argv[2]
+for i in beyond:
+    e = d["events"][i]
+    assert e["type"] in ("cushion", "jaw"), e
+    assert math.hypot(*e["before"][0]["velocity_mps"][:2]) > 2.5, e  # faster than its normal part
+PY
+python3 - "$root/assets/scenes/8-ball-break.json" "$work/range-high.json" "$work/range-bad.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["physics"] = {"cushion": {"valid_normal_speed_mps": 100}}
+json.dump(d, open(sys.argv[2], "w"))
+d["physics"]["cushion"]["valid_normal_speed_mps"] = -1
+json.dump(d, open(sys.argv[3], "w"))
+PY
+out=$("$baize" simulate "$work/range-high.json") || fail "raised limit exited $?"
+grep -qx "beyond the cushion model's range: 0 impacts (normal speed above 100 m/s)" <<<"$out" ||
+  fail "raised limit: $out"
+set +e
+msg=$("$baize" simulate "$work/range-bad.json" 2>&1 >/dev/null); status=$?
+set -e
+[[ $status -ne 0 ]] || fail "a negative limit was accepted"
+grep -qF "physics.cushion.valid_normal_speed_mps = -1 is not allowed" <<<"$msg" || fail "message: $msg"
+
 echo "simulate CLI: all checks passed"

@@ -12,7 +12,9 @@
 #include "engine/io/result_file.h"
 #include "engine/io/scene.h"
 #include "engine/io/table.h"
+#include "engine/play/model_range.h"
 #include "engine/play/shot_outcome.h"
+#include "physics/value_text.h"
 #include "render/shot_record.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
@@ -128,6 +130,10 @@ void runSimulate(const SimulateFlags& flags) {
   std::cout << (outcome.pocketed.empty() ? " none\n" : "\n");
   std::cout << "cushion and jaw contacts: " << outcome.cushion_contacts << " (cue ball "
             << cue.cushion_contacts << ")\n";
+  const std::size_t beyond = engine::impactsBeyondModelRange(scene, run).size();
+  std::cout << "beyond the cushion model's range: " << beyond
+            << (beyond == 1 ? " impact" : " impacts") << " (normal speed above "
+            << physics::valueText(engine::validNormalSpeedFor(scene)) << " m/s)\n";
   if (cue.pocketed) {
     std::cout << "cue ball: pocketed\n";
   } else {

@@ -77,6 +77,7 @@ void expectSame(const ShotResult& a, const ShotResult& b) {
     }
   }
   EXPECT_EQ(a.cushion_contacts, b.cushion_contacts);
+  EXPECT_EQ(a.beyond_model_range, b.beyond_model_range);
   EXPECT_EQ(a.predictions_solved, b.predictions_solved);
   EXPECT_EQ(a.predictions_skipped, b.predictions_skipped);
   ASSERT_EQ(a.trajectories.has_value(), b.trajectories.has_value());
@@ -134,6 +135,15 @@ TEST(ResultFile, EveryShippedSceneRoundTripsBitForBit) {
       EXPECT_EQ(resultJson(read), resultJson(written));  // and it writes the same document again
     }
   }
+}
+
+TEST(ResultFile, ImpactsBeyondTheModelsRangeRoundTripAndMayBeAbsent) {
+  const ShotResult written = resultOf("8-ball-break", false);
+  ASSERT_FALSE(written.beyond_model_range.empty());  // a break's hardest cushion impacts
+  EXPECT_EQ(throughText(written).beyond_model_range, written.beyond_model_range);
+  nlohmann::json without = resultJson(written);
+  without.erase("beyond_model_range");  // as results written before the key was
+  EXPECT_TRUE(resultFromJson(without, "old.json").beyond_model_range.empty());
 }
 
 TEST(ResultFile, SamplesLineAndIdRoundTrip) {
@@ -271,6 +281,15 @@ TEST(ResultFile, RefusalsNameTheFileTheKeyTheValueAndWhatIsAllowed) {
          pieces[0]["start_time_s"] = pieces[1]["start_time_s"].get<double>() + 1e-3;
        },
        "result.json: trajectories.cue[1].start_time_s = "},
+      {"beyond-range index past the events",
+       [](nlohmann::json& r) { r["beyond_model_range"] = {r["event_count"]}; },
+       "result.json: beyond_model_range[0] = "},
+      {"beyond-range indices out of order",
+       [](nlohmann::json& r) { r["beyond_model_range"] = {3, 2}; },
+       "result.json: beyond_model_range[1] = 2 is not allowed: it must be an event index"},
+      {"beyond-range index as text",
+       [](nlohmann::json& r) { r["beyond_model_range"] = {"3"}; },
+       "result.json: beyond_model_range[0] = \"3\" is not allowed"},
       {"off the table",
        [](nlohmann::json& r) {
          r["final_positions_m"]["cue"] = {9, 0};
