@@ -248,15 +248,23 @@ RollingSurfaceStats CushionRollingSurface::stats() const {
 }
 
 CushionRollingSurface& rollingSurfaceFor(const CushionParams& params) {
-  validateCushionParams(params);  // first: a NaN would break the map's order
   using Key = std::tuple<double, double, double, double, double, double>;
-  static std::mutex mutex;
-  static std::map<Key, std::unique_ptr<CushionRollingSurface>> surfaces;
   const Key key{params.mass_kg,     params.radius_m,         params.contact_height_m,
                 params.restitution, params.cushion_friction, params.cloth_friction};
+  // Every impact asks for its table; a shot's impacts ask for the same one. Each thread keeps the
+  // last it was given (tables live for the process), so an impact takes neither the lock nor the
+  // map below. A NaN never equals itself, so bad parameters always reach the check.
+  thread_local Key last_key{};
+  thread_local CushionRollingSurface* last_surface = nullptr;
+  if (last_surface != nullptr && key == last_key) return *last_surface;
+  validateCushionParams(params);  // first: a NaN would break the map's order
+  static std::mutex mutex;
+  static std::map<Key, std::unique_ptr<CushionRollingSurface>> surfaces;
   std::lock_guard<std::mutex> lock(mutex);
   std::unique_ptr<CushionRollingSurface>& surface = surfaces[key];
   if (!surface) surface = std::make_unique<CushionRollingSurface>(params);
+  last_key = key;
+  last_surface = surface.get();
   return *surface;
 }
 
