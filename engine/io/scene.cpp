@@ -237,19 +237,13 @@ Scene sceneFromJson(const nlohmann::json& document, const std::string& source,
   const double R = result.ball_set.radius_m;
   const double x_limit = result.table.length_m / 2 - R, y_limit = result.table.width_m / 2 - R;
   const std::vector<Eigen::Vector2d> outline = cushionOutline(result.table.cushions);
-  const auto inCapture = [&](const Eigen::Vector2d& p) {
-    for (const Pocket& pocket : result.table.pockets) {
-      if ((p - pocket.capture.centre_m).norm() <= pocket.capture.radius_m) return true;
-    }
-    return false;
-  };
   for (std::size_t i = 0; i < result.balls.size(); ++i) {
     const PlacedBall& b = result.balls[i];
     const bool between_rails = std::abs(b.position_m.x()) <= x_limit + kPlacementSlack_m &&
                                std::abs(b.position_m.y()) <= y_limit + kPlacementSlack_m;
     const bool off_table = !between_rails && !insideOutline(outline, b.position_m);
     // Between the rails too: a small or shallow pocket's circle or deep ends reach in there.
-    const bool in_capture = !off_table && inCapture(b.position_m);
+    const bool in_capture = !off_table && inCaptureCircle(result.table, b.position_m);
     if (off_table || in_capture || pastBothDeepEnds(result.table, b.position_m)) {
       const std::string where = source + ": ball '" + b.id + "' at [" +
                                 physics::valueText(b.position_m.x()) + ", " +

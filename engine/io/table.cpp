@@ -463,6 +463,13 @@ void checkCapturesCoverOpenings(const Table& table, double R) {
   }
 }
 
+bool inCaptureCircle(const Table& table, const Vector2d& point) {
+  for (const Pocket& pocket : table.pockets) {
+    if ((point - pocket.capture.centre_m).norm() <= pocket.capture.radius_m) return true;
+  }
+  return false;
+}
+
 bool pastBothDeepEnds(const Table& table, const Vector2d& point) {
   for (std::size_t k = 0; k < table.pockets.size(); ++k) {
     const CushionSegment& entry = table.cushions[3 * k];

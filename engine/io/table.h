@@ -108,6 +108,10 @@ void checkCapturesCoverOpenings(const Table& table, double ball_radius_m);
 // checkCapturesCoverOpenings says nothing of a ball that starts there.
 bool pastBothDeepEnds(const Table& table, const Eigen::Vector2d& point);
 
+// Whether `point` lies in one of the table's pockets' capture circles (on its edge included): a
+// ball whose centre starts there would start pocketed.
+bool inCaptureCircle(const Table& table, const Eigen::Vector2d& point);
+
 // The pockets' names in Table::pockets order, seen with +x to the right and +y up: "bottom-left",
 // "bottom-middle", "bottom-right", "top-right", "top-middle", "top-left".
 const std::vector<std::string>& pocketNames();

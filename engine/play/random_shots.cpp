@@ -27,11 +27,17 @@ std::vector<engine::Scene> randomSingleShots(int count, std::uint64_t seed) {
   const engine::Scene base = nineFootPoolScene();
   const double R = base.ball_set.radius_m;
   const double x = base.table.length_m / 2 - R, y = base.table.width_m / 2 - R;
+  // Between the rails, yet a corner pocket's capture circle reaches in: a ball there would start
+  // pocketed, which no scene file may ask for either (loadScene refuses it).
+  const auto startsInPocket = [&](const Eigen::Vector2d& p) {
+    return engine::inCaptureCircle(base.table, p) || engine::pastBothDeepEnds(base.table, p);
+  };
   std::vector<engine::Scene> shots;
   while (static_cast<int>(shots.size()) < count) {
     engine::Scene s = base;
     s.balls = {{"cue", {uniform(-x, x), uniform(-y, y)}}, {"1", {uniform(-x, x), uniform(-y, y)}}};
     if ((s.balls[0].position_m - s.balls[1].position_m).norm() < 2 * R) continue;
+    if (startsInPocket(s.balls[0].position_m) || startsInPocket(s.balls[1].position_m)) continue;
     s.shot.speed_mps = uniform(0.5, 4);
     s.shot.heading_rad = uniform(-M_PI, M_PI);
     const double offset = uniform(0, 0.45), angle = uniform(-M_PI, M_PI);

@@ -61,7 +61,10 @@ head -c 8 "$work/fit.png" | od -An -c | grep -q "P   N   G" || fail "no PNG writ
 # The same JSON on standard output, alone.
 "$baize" calibrate "$work/model.csv" --json - | python3 -c "import json,sys; json.load(sys.stdin)" ||
   fail "--json - is not JSON alone"
-[[ -z $("$baize" calibrate "$work/model.csv" --quiet) ]] || fail "--quiet printed"
+# --quiet drops the notes ("wrote ...") and keeps the fit.
+"$baize" calibrate "$work/model.csv" --json "$work/quiet.json" --quiet > "$work/quiet.txt"
+grep -q "wrote" "$work/quiet.txt" && fail "--quiet printed a note"
+cmp -s "$work/quiet.txt" <("$baize" calibrate "$work/model.csv") || fail "--quiet changed the fit's report"
 
 # The paper's head-on rolling snooker data: points above 1.5 m/s left out and counted, and the two
 # parameters reported as not separated.

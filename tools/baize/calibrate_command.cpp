@@ -129,7 +129,7 @@ void runCalibrate(const CalibrateFlags& flags) {
                      physics::valueText(flags.max_speed_mps) + ", --fit " + flags.fit + ")");
   }
   // With the JSON on standard output this goes to standard error (tools/baize/standard_output.h).
-  if (!quiet()) printCalibration(fit, std::cout);
+  printCalibration(fit, std::cout);  // the result: --quiet drops only notes and progress
   writeOutputs(flags, fit);
 }
 
