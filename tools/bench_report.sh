@@ -56,6 +56,11 @@ progress "accuracy against run time"
 "$baize" bench accuracy "${accuracy_flags[@]}" --csv "$work/accuracy.csv" > "$work/accuracy.txt"
 progress "cushion solvers"
 "$baize" bench cushion "${cushion_flags[@]}" --csv "$work/cushion.csv" > "$work/cushion.txt"
+progress "the 9-ball break's cushion impacts"
+break_flags=()
+[[ $quick -eq 1 ]] && break_flags=(--repeat 1)
+"$baize" bench cushion --from-scene assets/scenes/9-ball-break.json "${break_flags[@]}" \
+  --csv "$work/cushion-break.csv" > "$work/cushion-break.txt"
 progress "Python package"
 python_bench=(/usr/bin/python3 tools/bench_python.py)
 [[ $quick -eq 1 ]] && python_bench+=(--quick)
@@ -138,6 +143,16 @@ doc = [
     table(f"{work}/cushion.csv"),
     "",
     f"![Cushion solvers: time against error]({rel}/bench-cushion.png)",
+    "",
+    "### The 9-ball break's impacts (`--from-scene assets/scenes/9-ball-break.json`)",
+    "",
+    "The same rows on the cushion and jaw impacts of the 9-ball break, and how many of them the",
+    "default path answers from its table of rolling balls.",
+    "",
+    table(f"{work}/cushion-break.csv"),
+    "",
+] + [f"    {l}" for l in text(f"{work}/cushion-break.txt")
+     if l.startswith(("baize bench cushion:", "exact default:", "tabulated default"))] + [
     "",
     "## Rendering (`baize bench render`)",
     "",

@@ -48,6 +48,36 @@ std::vector<engine::Scene> randomSingleShots(int count, std::uint64_t seed) {
   return shots;
 }
 
+namespace {
+
+// Appends the impacts of `run`, the run of `shot`: each cushion and jaw contact moving into the
+// cushion, as the incoming ball in the contact's local frame.
+void appendCushionImpacts(const engine::Scene& shot, const engine::SceneRun& run,
+                          std::vector<physics::BallVelocity>* impacts) {
+  const engine::TableGeometry table = engine::geometryOf(shot.table);
+  for (const engine::Event& event : run.result.events) {
+    if (event.kind != engine::EventKind::Cushion && event.kind != engine::EventKind::Jaw) continue;
+    const physics::BallState& ball = event.before[0];
+    const engine::ContactFrame frame(
+        engine::contactNormal(table, event.kind, event.index, ball.position));
+    const physics::BallVelocity incoming = frame.toLocal(ball);
+    if (incoming.v.y() > 0) impacts->push_back(incoming);  // the loop's rule for an impact
+  }
+}
+
+// The Mathavan 2010 parameters of a shot's table and balls, with its physics.cushion overrides.
+physics::CushionParams mathavanParamsOf(const engine::Scene& shot) {
+  const engine::ModelDefaults defaults = engine::modelDefaultsFor(shot);
+  const engine::SimulationParams params = engine::simulationParamsFor(shot);
+  if (!shot.overrides.cushion)
+    return engine::impactParams(engine::readMathavan2010(defaults, nullptr), params);
+  const engine::JsonReader overrides(*shot.overrides.cushion, shot.overrides.source,
+                                     "physics.cushion");
+  return engine::impactParams(engine::readMathavan2010(defaults, &overrides), params);
+}
+
+}  // namespace
+
 std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Scene>& shots,
                                                     physics::CushionParams* params) {
   std::vector<physics::BallVelocity> impacts;
@@ -63,23 +93,24 @@ std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Sc
       throw std::runtime_error("random single shot " + std::to_string(i + 1) + ": " +
                                failure.what());
     }
-    const engine::TableGeometry table = engine::geometryOf(shot.table);
-    for (const engine::Event& event : run.result.events) {
-      if (event.kind != engine::EventKind::Cushion && event.kind != engine::EventKind::Jaw)
-        continue;
-      const physics::BallState& ball = event.before[0];
-      const engine::ContactFrame frame(
-          engine::contactNormal(table, event.kind, event.index, ball.position));
-      const physics::BallVelocity incoming = frame.toLocal(ball);
-      if (incoming.v.y() > 0) impacts.push_back(incoming);  // the loop's rule for an impact
-    }
+    appendCushionImpacts(shot, run, &impacts);
   }
   // The Mathavan 2010 parameters of the shots' table and balls (random shots override none).
-  if (!shots.empty()) {
-    *params =
-        engine::impactParams(engine::readMathavan2010(engine::modelDefaultsFor(shots[0]), nullptr),
-                             engine::simulationParamsFor(shots[0]));
-  }
+  if (!shots.empty()) *params = mathavanParamsOf(shots[0]);
+  return impacts;
+}
+
+std::vector<physics::BallVelocity> cushionImpactsOfScene(const engine::Scene& scene,
+                                                         physics::CushionParams* params) {
+  const std::string model = engine::simulationParamsFor(scene).cushion->name();
+  if (model != "exact" && model != "tabulated" && model != "paper")
+    throw std::invalid_argument("its cushion model is \"" + model +
+                                "\" (physics.cushion.model); its impacts are scored on the "
+                                "Mathavan 2010 model's solvers, so it must be exact, tabulated "
+                                "or paper");
+  std::vector<physics::BallVelocity> impacts;
+  appendCushionImpacts(scene, engine::runScene(scene), &impacts);
+  *params = mathavanParamsOf(scene);
   return impacts;
 }
 

@@ -1,6 +1,6 @@
-// The benches' seeded random single shots, and the cushion impacts they give the cushion model:
-// `baize bench shots` times the shots, `baize bench cushion --from-shots` scores the solvers on
-// their impacts (the impacts play produces, besides the bench's drawn sets).
+// The benches' seeded random single shots, and the cushion impacts they and scenes give the cushion
+// model: `baize bench shots` times the shots, `baize bench cushion --from-shots` and `--from-scene`
+// score the solvers on their impacts (the impacts play produces, besides the bench's drawn sets).
 #pragma once
 
 #include <cstdint>
@@ -28,5 +28,12 @@ std::vector<engine::Scene> randomSingleShots(int count,
 // `params` is set to their cushion's. A shot that fails throws std::runtime_error naming it.
 std::vector<physics::BallVelocity> cushionImpactsOf(const std::vector<engine::Scene>& shots,
                                                     physics::CushionParams* params);
+
+// The same for one scene's shot (a break, say), with its own physics: `params` is set to its
+// cushion's, its physics.cushion overrides included. Throws std::invalid_argument naming the model
+// when the scene's cushion model is not one of the Mathavan 2010 model's solvers (exact,
+// tabulated, paper), and what the simulation throws when the shot fails.
+std::vector<physics::BallVelocity> cushionImpactsOfScene(const engine::Scene& scene,
+                                                         physics::CushionParams* params);
 
 }  // namespace baize::engine

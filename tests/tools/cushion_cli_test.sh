@@ -7,6 +7,7 @@
 set -euo pipefail
 
 baize=$1
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -323,8 +324,49 @@ assert shots["defaultexact"] < shots["N=50000paper"] < shots["N=100paper"], shot
 ' "$work/bench_pool.csv" "$work/bench_shots.csv"
 grep -qE "^exact default: [0-9]+\.[0-9] evaluations per impact; [0-9]+ of [0-9]+ impacts above 5e-10 V0, 0 above the promised 1e-9 V0 \(kept\)$" \
   "$work/bench_shots.out" || fail "the shots bench does not report the exact solver's promise: $(grep "exact default" "$work/bench_shots.out")"
-grep -qE "^tabulated default \(the default path\): [1-9][0-9]* of [0-9]+ impacts answered from the table, the rest solved exactly; [0-9.e+-]+ ns median; largest error [0-9.e+-]+ V0, 99.9th percentile [0-9.e+-]+ V0; promised 1e-8 V0 \(kept\)$" \
+grep -qE "^tabulated default \(the default path\): [1-9][0-9]* of [0-9]+ impacts answered from the table, the rest solved exactly \([0-9.e+]+ rate evaluations each\); [0-9.e+-]+ ns median; largest error [0-9.e+-]+ V0, 99.9th percentile [0-9.e+-]+ V0; promised 1e-8 V0 \(kept\)$" \
   "$work/bench_shots.out" || fail "the shots bench does not report the default path's promise: $(grep "tabulated default" "$work/bench_shots.out")"
+
+# The bench on the impacts of one scene's shot: as many as the scene's result counts cushion and
+# jaw contacts, its table's cushion, the default path's split between the table and the exact
+# solver, and the scene's cushion overrides in force.
+"$baize" bench cushion --from-scene "$root/assets/scenes/9-ball-break.json" --repeat 1 \
+  --csv "$work/bench_scene.csv" >"$work/bench_scene.out" || fail "bench --from-scene exited $?"
+"$baize" simulate "$root/assets/scenes/9-ball-break.json" --json "$work/break.json" --quiet >/dev/null ||
+  fail "simulate of the break exited $?"
+check_python '
+import re
+out = open(sys.argv[1]).read()
+contacts = [e for e in load(sys.argv[2])["events"] if e["type"] in ("cushion", "jaw")]
+header = re.search(r"^baize bench cushion: the (\d+) cushion and jaw impacts of .*9-ball-break.json", out, re.M)
+assert header and int(header.group(1)) == len(contacts) > 0, (out[:200], len(contacts))
+split = re.search(r"^tabulated default \(the default path\): (\d+) of (\d+) impacts answered", out, re.M)
+assert split and 0 < int(split.group(1)) < int(split.group(2)) == len(contacts), out
+assert "cushion: M 0.17 kg, R 0.028575 m, h 0.03629 m, e_e 0.74, mu_w 0.14, mu_s 0.2" in out, out
+shots = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[3])}
+assert shots["defaultexact"] <= 1e-9 and shots["defaulttabulated"] <= 1e-8, shots
+' "$work/bench_scene.out" "$work/break.json" "$work/bench_scene.csv"
+cat >"$work/lively_break.json" <<'JSON'
+{"table": "pool-9ft", "ball_set": "pool", "rack": {"name": "9-ball"},
+ "shot": {"aim_at": "1", "speed_mps": 6.0, "height": -0.1},
+ "physics": {"cushion": {"model": "exact", "restitution": 0.9}}}
+JSON
+"$baize" bench cushion --from-scene "$work/lively_break.json" --repeat 1 >"$work/bench_lively.out" ||
+  fail "bench --from-scene with overrides exited $?"
+grep -qF "cushion: M 0.17 kg, R 0.028575 m, h 0.03629 m, e_e 0.9, mu_w 0.14, mu_s 0.2" \
+  "$work/bench_lively.out" || fail "the scene bench does not take the scene's cushion overrides"
+cat >"$work/simple_break.json" <<'JSON'
+{"table": "pool-9ft", "ball_set": "pool", "rack": {"name": "9-ball"},
+ "shot": {"aim_at": "1", "speed_mps": 6.0}, "physics": {"cushion": {"model": "simple"}}}
+JSON
+expect_error 2 "simple_break.json: its cushion model is \"simple\" (physics.cushion.model)" \
+  bench cushion --from-scene "$work/simple_break.json"
+expect_error 2 "draw-shot.json: its shot meets no cushion" \
+  bench cushion --from-scene "$root/assets/scenes/draw-shot.json"
+expect_error 2 "the file cannot be opened" bench cushion --from-scene "$work/no_such_scene.json"
+expect_error 2 "--from-shots excludes --from-scene" bench cushion --from-scene x --from-shots 2
+expect_error 2 "--from-scene excludes --set" bench cushion --from-scene x --set spinning
+expect_error 2 "--mass excludes --from-scene" bench cushion --from-scene x --mass 0.2
 
 # ---- 7. The sets that check the exact solver's promise alone: spin about every axis, and grippy
 # cushions and cloth drawn per impact. One row each, the same for the same seed, another for

@@ -8,8 +8,10 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
+#include "engine/io/scene.h"
 #include "engine/play/random_shots.h"
 #include "physics/value_text.h"
 #include "tools/baize/atomic_file.h"
@@ -36,6 +38,7 @@ struct BenchFlags {
   int passes = kDefaultPasses;
   CushionParamFlags cushion_flags;    // default: the paper's snooker values
   std::optional<int> from_shots;      // given: the impacts of this many random single shots instead
+  std::string from_scene;             // given: the impacts of this scene's shot instead
   std::string set = "drawn";          // drawn (the wide and rolling sets), spinning or grippy
   std::optional<std::uint64_t> seed;  // of the spinning or grippy set
   bool repeat_given = false;          // --repeat on the command line (those sets are not timed)
@@ -113,8 +116,15 @@ void printPromise(const BenchRow& exact, int impacts) {
 void printTabulatedPromise(const BenchRow& tabulated, std::size_t impacts) {
   const bool kept = tabulated.max_error <= kTabulatedPromise;
   std::cout << "tabulated default (the default path): " << tabulated.table_answers << " of "
-            << impacts << " impacts answered from the table, the rest solved exactly; "
-            << std::setprecision(3);
+            << impacts << " impacts answered from the table, the rest solved exactly";
+  const std::size_t solved = impacts - static_cast<std::size_t>(tabulated.table_answers);
+  if (solved > 0) {  // their cost: the table's answers take no rate evaluations
+    std::cout << " (" << std::setprecision(4)
+              << tabulated.evaluations_per_impact * static_cast<double>(impacts) /
+                     static_cast<double>(solved)
+              << " rate evaluations each)";
+  }
+  std::cout << "; " << std::setprecision(3);
   if (tabulated.median_ns > 0) std::cout << tabulated.median_ns << " ns median; ";
   std::cout << "largest error " << tabulated.max_error << " V0, 99.9th percentile "
             << tabulated.p999_error << " V0; promised " << exponentText(kTabulatedPromise)
@@ -227,13 +237,14 @@ void runBench(const BenchFlags& flags) {
   }
 
   std::vector<BenchInput> inputs;
-  if (flags.from_shots) {
-    const std::vector<physics::BallVelocity> impacts =
-        engine::cushionImpactsOf(engine::randomSingleShots(*flags.from_shots), &params);
+  const auto impactsOfPlay = [&](const std::vector<physics::BallVelocity>& impacts) {
     for (const physics::BallVelocity& incoming : impacts) {
       inputs.push_back(
           {incoming, std::hypot(incoming.v.x(), incoming.v.y()), true, std::nullopt, std::nullopt});
     }
+  };
+  if (flags.from_shots) {
+    impactsOfPlay(engine::cushionImpactsOf(engine::randomSingleShots(*flags.from_shots), &params));
     if (inputs.empty()) {
       rejectFlag("--from-shots", *flags.from_shots, "those shots meet no cushion; take more");
     }
@@ -241,6 +252,20 @@ void runBench(const BenchFlags& flags) {
               << *flags.from_shots << " random single shot" << (*flags.from_shots == 1 ? "" : "s")
               << " (those of `baize bench shots`), "
               << "best time of " << flags.passes << " timed passes per impact\n";
+  } else if (!flags.from_scene.empty()) {
+    const engine::Scene scene = engine::loadScene(flags.from_scene);
+    try {
+      impactsOfPlay(engine::cushionImpactsOfScene(scene, &params));
+    } catch (const std::invalid_argument& refused) {
+      throw UsageError("--from-scene " + flags.from_scene + ": " + refused.what());
+    }
+    if (inputs.empty()) {
+      throw UsageError("--from-scene " + flags.from_scene +
+                       ": its shot meets no cushion; the scene must have cushion or jaw impacts");
+    }
+    std::cout << "baize bench cushion: the " << inputs.size() << " cushion and jaw impacts of "
+              << flags.from_scene << ", best time of " << flags.passes
+              << " timed passes per impact\n";
   } else {
     inputs = seededBenchInputs(params.radius_m, flags.impacts);
     std::cout << "baize bench cushion: " << flags.impacts << " impacts (seed " << kBenchSeed
@@ -266,7 +291,7 @@ void runBench(const BenchFlags& flags) {
   const BenchRow& paper = rowLabelled(report, SolverKind::Paper, "N=5000");
   const BenchRow& exact = rowLabelled(report, SolverKind::Exact, "default");
   // The targets are set on the drawn sets; the impacts of play are scored against none.
-  const bool targets = !flags.from_shots;
+  const bool targets = !flags.from_shots && flags.from_scene.empty();
   printRatio("speed ratio (paper N=5000 median_ns / exact default median_ns)",
              paper.median_ns / exact.median_ns, targets ? kSpeedTarget : 0);
   printRatio("accuracy ratio (paper N=5000 max_error / exact default max_error)",
@@ -304,6 +329,11 @@ void addBenchCushionCommand(CLI::App& bench) {
       command->add_option("--from-shots", flags->from_shots,
                           "score the impacts of this many of `baize bench shots`' random single "
                           "shots instead of the seeded sets (their table's cushion)");
+  CLI::Option* from_scene =
+      command->add_option("--from-scene", flags->from_scene,
+                          "score the impacts of this scene's shot (a break, say) instead of the "
+                          "seeded sets (its cushion, overrides included)")
+          ->check(notEmpty());
   CLI::Option* set =
       command
           ->add_option("--set", flags->set,
@@ -319,8 +349,11 @@ void addBenchCushionCommand(CLI::App& bench) {
       ->check(unsigned64());
   for (const char* name : {"--impacts", "--mass", "--radius", "--h", "--e", "--mu-w", "--mu-s"}) {
     from_shots->excludes(name);
+    from_scene->excludes(name);
   }
   from_shots->excludes(set);
+  from_scene->excludes(set);
+  from_scene->excludes(from_shots);
   command->callback([flags, repeat, command] {
     flags->repeat_given = repeat->count() > 0;
     flags->frictions_given =
