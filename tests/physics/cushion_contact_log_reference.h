@@ -51,7 +51,8 @@ inline std::array<Eigen::Vector2d, 2> referenceSlips(double R, double s, double 
 }
 
 // One Euler increment dP with friction against the slips u (none where a slip is exactly zero):
-// the rates of eq. 14a and its five partners (docs/cushion.md, "The model").
+// eq. 14a and the five rates the paper leaves out, written from the impulses on the ball (the
+// normal impulse and friction mu_w at I, friction mu_s q at C, the table's q keeping v_z at 0).
 inline void referenceIncrement(const CushionParams& p, double s, double c,
                                const std::array<Eigen::Vector2d, 2>& u, double dP,
                                BallVelocity* ball) {
