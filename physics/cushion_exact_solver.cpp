@@ -189,9 +189,11 @@ class ExactImpact : public EventLocation {
     contacts_[k].receding = false;
   }
   // Records the contacts' physical modes at z where they changed: a contact sticks while it is held
-  // and its cone holds it, and slips otherwise (a held contact sliding along phi* slips). Between
-  // located instants (the start, the phase ends) a change is recorded at the end of the step in
-  // which it happened.
+  // and its cone holds it, and slips otherwise (a held contact sliding along phi* slips). Called
+  // wherever the laws change: the start, located events, the changes due at a step's end (a slip
+  // held where it has vanished, a held contact released). A change of a held law within a step
+  // without a located event (a cone holding again near its edge, where its events are not armed)
+  // is recorded at that step's end.
   void reportModes(const State& z) {
     Laws laws;  // needed only for a held contact (any other one slips)
     if (held(0) || held(1)) laws = lawsAt(slips(z), nullptr);
@@ -374,13 +376,16 @@ bool ExactImpact::applyDueChanges(const State& z, const std::array<Eigen::Vector
   return changed;
 }
 
-// After contact changes at the cursor: the step trend is broken and the rate taken again.
+// After contact changes at the cursor: the step trend is broken, the rate taken again, and the
+// changes recorded here, where they take effect. (Recorded at the next step's end instead, a stick
+// held here was listed late, or not at all when that step ran to where the contact slid again.)
 void ExactImpact::restartAfterChanges(Cursor* at) {
   previous_error_ = 0;
   missed_landings_ = 0;
   at->k1 = rate(at->z);
   at->h = std::max(at->h, restartStep(at->k1));
   updateSlipsRunInP(at->z, slips(at->z), &at->k1, &at->h);  // judged again under the new laws
+  reportModes(at->z);
 }
 
 // The events the next step watches (the phase end first), with the step cut to a held law's

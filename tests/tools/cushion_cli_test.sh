@@ -91,6 +91,26 @@ assert q["solver"] == "paper" and q["setting"] == "N=5000" and q["contact_change
 close(q["speed_ratio"], d["speed_ratio"], 1e-3, "paper vs exact speed ratio")
 ' "$work/default.json" "$work/default_paper.json"
 
+# The contact log: a stun ball head-on into the 9 ft pool table's cushion (its shipped e_e 0.74)
+# sticks at the nose before compression ends, and the stick is listed there at the default
+# tolerance as at 1e-14 (tests/physics checks the log against an independent reference).
+pool_stun=(--mass 0.17 --radius 0.028575 --h 0.03629 --mu-s 0.2 --e 0.74 --topspin 0)
+json_of pool_stun "${pool_stun[@]}"
+json_of pool_stun_converged "${pool_stun[@]}" --tolerance 1e-14
+check_python '
+fast, converged = load(sys.argv[1]), load(sys.argv[2])
+def sticks(d):
+    return [c["impulse_Ns"] for c in d["contact_changes"]
+            if c["contact"] == "cushion" and c["mode"] == "stick"]
+assert len(sticks(fast)) == 1, fast["contact_changes"]
+assert 0 < sticks(fast)[0] < fast["compression_impulse_Ns"], fast["contact_changes"]
+assert len(sticks(converged)) == 1, converged["contact_changes"]
+close(sticks(fast)[0], sticks(converged)[0], 1e-6 * 0.17, "stick onset, default vs 1e-14")
+' "$work/pool_stun.json" "$work/pool_stun_converged.json"
+out=$("$baize" cushion "${pool_stun[@]}") || fail "baize cushion ${pool_stun[*]} exited $?"
+grep -q "N s: cushion sticks" <<<"$out" || fail "the pool stun ball's stick is not listed:
+$out"
+
 # ---- 3. Flags reach the model.
 # Frictionless cushion and cloth: the closed form v_x' = v_x, v_y' = -e v_y, spin unchanged.
 json_of frictionless --solver exact --mu-w 0 --mu-s 0 --e 0.8 --angle 30 --speed 2 --topspin 0.5 --sidespin 1
