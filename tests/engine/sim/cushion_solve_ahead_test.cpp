@@ -349,7 +349,9 @@ TEST(CushionSolveAheadPolicy, ShotsOnTheirOwnDoNotUseTheWorkerAndShotsBackToBack
   const Scene scene = shippedScene("9-ball-break");
   CushionImpactWorker worker;
   for (int shot = 0; shot < 5; ++shot) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // ten times its awake time
+    // Fifty times its awake time: on a busy machine the worker may wait long for a core to notice
+    // that its time is up and fall asleep.
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
     runScene(scene, false, &worker);
   }
   EXPECT_EQ(worker.shotsServed(), 0);
