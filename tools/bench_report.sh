@@ -57,7 +57,7 @@ progress "accuracy against run time"
 progress "cushion solvers"
 "$baize" bench cushion "${cushion_flags[@]}" --csv "$work/cushion.csv" > "$work/cushion.txt"
 progress "Python package"
-python_bench=(/usr/bin/python3 tools/bench_python.py)
+python_bench=(/usr/bin/python3 tools/bench_python.py --baize "$baize")
 [[ $quick -eq 1 ]] && python_bench+=(--quick)
 if [[ -d "$(dirname "$baize")/python/baize" ]]; then
   PYTHONPATH="$(dirname "$baize")/python" "${python_bench[@]}" > "$work/python.md"
