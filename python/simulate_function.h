@@ -5,7 +5,8 @@
 
 namespace baize::python {
 
-// Registers baize.simulate and, for tools/bench_python.py, _baize._native_run_times_ns.
+// Registers baize.simulate and, for tools/bench_python.py, _baize._native_run_times_ns and
+// _baize._native_clock_ns.
 void bindSimulate(pybind11::module_& module);
 
 }  // namespace baize::python

@@ -36,31 +36,44 @@ def one_core():
         os.sched_setaffinity(0, allowed)
 
 
+def clock_costs_ns(count):
+    """The median empty interval of Python's clock and of the C++ clock, each read as the timings
+    below read it: what reading the clock adds to every time, taken off it."""
+    clock, empty = time.perf_counter_ns, []
+    for _ in range(count):
+        start = clock()
+        empty.append(clock() - start)
+    return statistics.median(empty), statistics.median(_baize._native_clock_ns(count))
+
+
 def single_shot_figures(shots, repeats):
     """Per shot, the median over `repeats` runs of: baize.simulate; in C++, engine::runScene
     recording trajectories (what simulate runs) and without them (what `baize bench shots` times),
-    each result freed. The three run in turn, so that they see the same load. Returns the medians
-    over shots of those times (ns) and of the per-shot ratios simulate / C++."""
+    each result freed. The three run in turn, so that they see the same load, and each clock's own
+    cost is taken off its times. Returns the medians over shots of those times (ns) and of the
+    per-shot ratios simulate / C++."""
     clock, simulate, native = time.perf_counter_ns, baize.simulate, _baize._native_run_times_ns
     per_shot = []
     with one_core():
         for scene in shots:  # untimed warm-up: the cushion model's tables, the caches
             simulate(scene)
+        python_clock_ns, native_clock_ns = clock_costs_ns(len(shots) * repeats)
         for scene in shots:
             python_ns, recorded_ns, plain_ns = [], [], []
             for _ in range(repeats):
                 start = clock()
                 simulate(scene)
-                python_ns.append(clock() - start)
-                recorded_ns.extend(native(scene, 1, True))
-                plain_ns.extend(native(scene, 1, False))
+                python_ns.append(clock() - start - python_clock_ns)
+                recorded_ns.append(native(scene, 1, True)[0] - native_clock_ns)
+                plain_ns.append(native(scene, 1, False)[0] - native_clock_ns)
             per_shot.append([statistics.median(t) for t in (python_ns, recorded_ns, plain_ns)])
     python_ns, recorded_ns, plain_ns = zip(*per_shot)
     return {"python_us": statistics.median(python_ns) / 1e3,
             "recorded_us": statistics.median(recorded_ns) / 1e3,
             "plain_us": statistics.median(plain_ns) / 1e3,
             "ratio_recorded": statistics.median(p / r for p, r, _ in per_shot),
-            "ratio_plain": statistics.median(p / q for p, _, q in per_shot)}
+            "ratio_plain": statistics.median(p / q for p, _, q in per_shot),
+            "python_clock_ns": python_clock_ns, "native_clock_ns": native_clock_ns}
 
 
 def timed_s(work):
@@ -170,7 +183,8 @@ def main():
         f"us against {s['recorded_us']:.2f} us for `engine::runScene` recording trajectories as "
         f"`simulate` does, ratio {s['ratio_recorded']:.3f}; against {s['plain_us']:.2f} us without "
         f"recording (what `baize bench shots` times), ratio {s['ratio_plain']:.3f} (ratios: median "
-        "over shots of each shot's median times).",
+        "over shots of each shot's median times; each clock's own cost, measured empty, taken off: "
+        f"{s['python_clock_ns']:.0f} ns in Python, {s['native_clock_ns']:.0f} ns in C++).",
         f"- `baize.simulate_many` on {batch} random shots: {one:.0f} shots/s on 1 thread (one core), "
         f"{two:.0f} shots/s on 2 threads (two cores): ratio {two / one:.2f} (median of "
         f"{batch_repeats}).",

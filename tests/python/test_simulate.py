@@ -96,6 +96,15 @@ def test_simulate_wants_a_scene():
         baize.simulate(baize.Scene.__new__(baize.Scene))
     scene = baize.random_shots(1, seed=1)[0]
     assert baize.simulate(scene=scene).events == baize.simulate(scene).events
+
+    class MyScene(baize.Scene):  # a subclass goes the general way, with the same result
+        pass
+
+    mine = MyScene(table="pool-9ft", ball_set="pool", balls={"cue": (-0.6, 0.0), "1": (0.4, 0.02)},
+                   shot={"aim_at": "1", "speed_mps": 2.5})
+    same = baize.Scene(table="pool-9ft", ball_set="pool", balls={"cue": (-0.6, 0.0), "1": (0.4, 0.02)},
+                       shot={"aim_at": "1", "speed_mps": 2.5})
+    assert baize.simulate(mine).events == baize.simulate(same).events
     with pytest.raises(TypeError, match="one argument, scene; got 0 by position"):
         baize.simulate()
     with pytest.raises(TypeError, match="got 2 by position"):
