@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "engine/io/result_file.h"
@@ -82,6 +83,17 @@ py::array_t<double> sample(ShotRun& shot, const py::array_t<double, py::array::f
 }
 
 }  // namespace
+
+py::object resultObject(ShotRun&& shot) {
+  static const py::detail::type_info* const bound = py::detail::get_type_info(typeid(ShotRun));
+  auto owned = std::make_unique<ShotRun>(std::move(shot));
+  py::handle result = py::detail::type_caster_generic::cast(
+      owned.get(), py::return_value_policy::take_ownership, py::handle(), bound, nullptr, nullptr,
+      nullptr);
+  if (!result) throw py::error_already_set();
+  owned.release();  // the Python object owns it now
+  return py::reinterpret_steal<py::object>(result);
+}
 
 void bindResult(py::module_& module) {
   py::class_<PyEvent>(module, "Event", "One event of a shot, in the order they happened.")

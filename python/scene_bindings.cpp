@@ -94,6 +94,14 @@ py::array_t<double> positionsOf(const engine::Scene& scene) {
 }  // namespace
 
 std::shared_ptr<const engine::Scene> sceneArgument(py::handle argument, const std::string& name) {
+  // A baize.Scene itself (not a subclass) holding its scene is read straight from pybind11's record
+  // of the class, looked up once: the general cast below looks it up by the type's name each time.
+  static const py::detail::type_info* const bound = py::detail::get_type_info(typeid(engine::Scene));
+  if (Py_TYPE(argument.ptr()) == bound->type) {
+    const py::detail::value_and_holder held =
+        reinterpret_cast<py::detail::instance*>(argument.ptr())->get_value_and_holder(bound);
+    if (held.holder_constructed()) return held.holder<std::shared_ptr<engine::Scene>>();
+  }
   py::detail::make_caster<std::shared_ptr<engine::Scene>> scene;
   bool loaded = false;
   try {

@@ -87,7 +87,7 @@ py::list simulateMany(const py::iterable& scenes_in, int threads, const std::str
   py::list errors;
   for (BatchEntry& entry : entries) {
     if (entry.shot) {
-      results.append(py::cast(std::move(*entry.shot)));
+      results.append(resultObject(std::move(*entry.shot)));
     } else {
       py::object error = py::cast(entry.error);
       results.append(error);

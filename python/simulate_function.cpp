@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "python/result_bindings.h"
 #include "python/scene_bindings.h"
 #include "python/shot_run.h"
 
@@ -36,40 +37,6 @@ PyObject* theSceneArgument(PyObject* const* arguments, Py_ssize_t positional, Py
                        " by position and " + std::to_string(named) + " by name");
 }
 
-// pybind11's records of baize.Scene and baize.Result, looked up once (module.cpp binds both before
-// simulate can be called): its general casts look each up by the type's name on every call.
-struct BoundTypes {
-  const py::detail::type_info* scene = py::detail::get_type_info(typeid(engine::Scene));
-  const py::detail::type_info* result = py::detail::get_type_info(typeid(ShotRun));
-};
-
-const BoundTypes& boundTypes() {
-  static const BoundTypes types;
-  return types;
-}
-
-// A baize.Scene itself (not a subclass) holding its scene, read straight from its record; anything
-// else through sceneArgument, which also names what is wrong.
-std::shared_ptr<const engine::Scene> theScene(PyObject* scene) {
-  const py::detail::type_info* bound = boundTypes().scene;
-  if (Py_TYPE(scene) == bound->type) {
-    const py::detail::value_and_holder held =
-        reinterpret_cast<py::detail::instance*>(scene)->get_value_and_holder(bound);
-    if (held.holder_constructed()) return held.holder<std::shared_ptr<engine::Scene>>();
-  }
-  return sceneArgument(scene, "scene");
-}
-
-// A new baize.Result owning the shot.
-PyObject* resultObject(ShotRun&& shot) {
-  auto owned = std::make_unique<ShotRun>(std::move(shot));
-  const py::handle result = py::detail::type_caster_generic::cast(
-      owned.get(), py::return_value_policy::take_ownership, py::handle(), boundTypes().result,
-      nullptr, nullptr, nullptr);
-  if (result) owned.release();  // the Python object owns it now
-  return result.ptr();
-}
-
 // Whether a Python thread other than this one exists, which could run while this one simulates.
 bool otherPythonThreads() {
   PyThreadState* self = PyThreadState_Get();
@@ -90,7 +57,7 @@ PyObject* simulate(PyObject* /*module*/, PyObject* const* arguments, Py_ssize_t 
                    PyObject* keywords) noexcept {
   try {
     PyObject* scene = theSceneArgument(arguments, positional, keywords);
-    return resultObject(runReleasingTheGilWhenWorthIt(theScene(scene)));
+    return resultObject(runReleasingTheGilWhenWorthIt(sceneArgument(scene, "scene"))).release().ptr();
   } catch (...) {
     // The exceptions as a pybind11 binding raises them: std::invalid_argument a ValueError, ...
     py::detail::translate_exception(std::current_exception());
