@@ -6,6 +6,7 @@
 #include "python/result_bindings.h"
 #include "python/scene_bindings.h"
 #include "python/shot_batch.h"
+#include "python/simulate_function.h"
 #ifdef BAIZE_WITH_RENDER
 #include "python/render_bindings.h"
 #endif
@@ -14,6 +15,7 @@ PYBIND11_MODULE(_baize, module) {
   module.doc() = "Baize's engine: scenes, shots, results, the cushion model.";
   baize::python::bindScene(module);
   baize::python::bindResult(module);
+  baize::python::bindSimulate(module);
   baize::python::bindShotBatch(module);
   baize::python::bindCushion(module);
 #ifdef BAIZE_WITH_RENDER

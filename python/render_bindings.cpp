@@ -35,8 +35,8 @@ void renderPng(const engine::Scene& scene, const std::string& path,
     throw py::value_error("view = '" + view + "' is not allowed: it must be 'top' or 'angled'");
   if (path.empty()) throw py::value_error("path is empty: name the PNG file to write");
   const py::gil_scoped_release released;
-  const ShotRun shot = result ? **result : runShot(scene);
-  const render::ShotRecord record = render::shotRecordOf(scene, shot.run);
+  const engine::SceneRun run = result ? (**result).run : engine::runScene(scene, true);
+  const render::ShotRecord record = render::shotRecordOf(scene, run);
   render::OsmesaContext context;
   render::GlRenderer renderer(context);
   render::PictureOptions options;

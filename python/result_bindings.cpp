@@ -4,10 +4,10 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "engine/io/result_file.h"
-#include "engine/play/model_range.h"
 #include "python/result_pickle.h"
 
 namespace baize::python {
@@ -45,17 +45,17 @@ std::vector<PyEvent> eventsOf(const ShotRun& shot) {
 }
 
 py::array_t<double> finalPositions(const ShotRun& shot) {
-  const auto& balls = shot.outcome.final_balls;
+  const auto& balls = shot.run.result.final_balls;  // in ball_ids' order
   py::array_t<double> positions({static_cast<py::ssize_t>(balls.size()), py::ssize_t{2}});
   auto view = positions.mutable_unchecked<2>();
   for (std::size_t i = 0; i < balls.size(); ++i) {
-    view(i, 0) = balls[i].position_m.x();
-    view(i, 1) = balls[i].position_m.y();
+    view(i, 0) = balls[i].state.position.x();
+    view(i, 1) = balls[i].state.position.y();
   }
   return positions;
 }
 
-py::array_t<double> sample(const ShotRun& shot, const py::array_t<double, py::array::forcecast>& times) {
+py::array_t<double> sample(ShotRun& shot, const py::array_t<double, py::array::forcecast>& times) {
   if (times.ndim() != 1) {
     throw py::value_error("times must be one-dimensional (a list or 1-D array of seconds); got " +
                           std::to_string(times.ndim()) + " dimensions");
@@ -68,12 +68,13 @@ py::array_t<double> sample(const ShotRun& shot, const py::array_t<double, py::ar
     }
   }
   const auto& trajectories = shot.run.result.trajectories;
+  const physics::ClothParams& cloth = clothOf(shot);
   py::array_t<double> positions(
       {static_cast<py::ssize_t>(trajectories.size()), t.shape(0), py::ssize_t{2}});
   auto view = positions.mutable_unchecked<3>();
   for (std::size_t i = 0; i < trajectories.size(); ++i) {
     for (py::ssize_t k = 0; k < t.shape(0); ++k) {
-      const physics::BallState state = engine::sampleTrajectory(shot.cloth, trajectories[i], t(k));
+      const physics::BallState state = engine::sampleTrajectory(cloth, trajectories[i], t(k));
       view(i, k, 0) = state.position.x();
       view(i, k, 1) = state.position.y();
     }
@@ -83,13 +84,15 @@ py::array_t<double> sample(const ShotRun& shot, const py::array_t<double, py::ar
 
 }  // namespace
 
-ShotRun runShot(const engine::Scene& scene) {
-  ShotRun shot;
-  shot.run = engine::runScene(scene, /*record_trajectories=*/true);
-  shot.outcome = engine::shotOutcome(shot.run, scene.cue_ball);
-  shot.cloth = engine::simulationParamsFor(scene).cloth;
-  shot.beyond_model_range = engine::impactsBeyondModelRange(scene, shot.run);
-  return shot;
+py::object resultObject(ShotRun&& shot) {
+  static const py::detail::type_info* const bound = py::detail::get_type_info(typeid(ShotRun));
+  auto owned = std::make_unique<ShotRun>(std::move(shot));
+  py::handle result = py::detail::type_caster_generic::cast(
+      owned.get(), py::return_value_policy::take_ownership, py::handle(), bound, nullptr, nullptr,
+      nullptr);
+  if (!result) throw py::error_already_set();
+  owned.release();  // the Python object owns it now
+  return py::reinterpret_steal<py::object>(result);
 }
 
 void bindResult(py::module_& module) {
@@ -118,25 +121,25 @@ void bindResult(py::module_& module) {
                              "where each ball stopped (or fell), numpy array n x 2, metres")
       .def_property_readonly(
           "pocketed",
-          [](const ShotRun& s) {
+          [](ShotRun& s) {
             std::vector<std::pair<std::string, int>> fallen;
-            for (const engine::PocketedBall& b : s.outcome.pocketed) fallen.emplace_back(b.ball, b.pocket);
+            for (const engine::PocketedBall& b : outcomeOf(s).pocketed) fallen.emplace_back(b.ball, b.pocket);
             return fallen;
           },
           "the balls pocketed, in the order they fell: (ball id, pocket index) pairs")
       .def_property_readonly(
-          "first_ball_hit", [](const ShotRun& s) { return s.outcome.first_hit; },
+          "first_ball_hit", [](ShotRun& s) { return outcomeOf(s).first_hit; },
           "the first ball the cue ball touched, or None")
       .def_property_readonly(
-          "foul", [](const ShotRun& s) { return std::string(engine::foulName(s.outcome.foul)); },
+          "foul", [](ShotRun& s) { return std::string(engine::foulName(outcomeOf(s).foul)); },
           "'none', or the foul the shot made")
-      .def_readonly("beyond_model_range", &ShotRun::beyond_model_range,
+      .def_property_readonly("beyond_model_range", &beyondModelRangeOf,
                     "indices into events of the cushion and jaw impacts faster than the scene's "
                     "physics.cushion.valid_normal_speed_mps (the cushion model's stated range)")
       .def_property_readonly(
           "end_time", [](const ShotRun& s) { return s.run.result.end_time_s; },
           "when the last ball stopped or fell, s")
-      .def(py::pickle([](const ShotRun& s) { return py::bytes(shotRunBytes(s)); },
+      .def(py::pickle([](ShotRun& s) { return py::bytes(shotRunBytes(s)); },
                       [](const py::bytes& bytes) { return shotRunFromBytes(bytes); }))
       .def("sample", &sample, py::arg("times"),
            "Positions at the given times (s, >= 0) from the exact trajectories: numpy array "

@@ -4,26 +4,13 @@
 
 #include <pybind11/pybind11.h>
 
-#include <string>
-#include <vector>
-
-#include "engine/io/scene.h"
-#include "engine/play/shot_outcome.h"
-#include "physics/cloth_motion.h"
+#include "python/shot_run.h"
 
 namespace baize::python {
 
-struct ShotRun {
-  engine::SceneRun run;  // with its trajectories, for sample()
-  engine::ShotOutcome outcome;
-  physics::ClothParams cloth;  // the cloth the balls moved on, for sample()
-  // Event indices of the impacts beyond the cushion model's range (engine/play/model_range.h).
-  std::vector<long> beyond_model_range;
-};
-
-// Strikes and simulates the scene to rest, recording trajectories. Needs no Python (callable with
-// the GIL released); throws what engine::runScene throws.
-ShotRun runShot(const engine::Scene& scene);
+// A new baize.Result owning the shot (pybind11's record of the class looked up once, not by the
+// type's name on every call as its general cast does; a shot's cost is small enough for it to show).
+pybind11::object resultObject(ShotRun&& shot);
 
 // Registers baize.Event and baize.Result.
 void bindResult(pybind11::module_& module);

@@ -83,13 +83,13 @@ constexpr std::size_t kStateBytes = 8 * sizeof(double);
 
 }  // namespace
 
-std::string shotRunBytes(const ShotRun& shot) {
+std::string shotRunBytes(ShotRun& shot) {
   Writer w;
   w.integer(kLayoutVersion);
-  w.text(shot.outcome.cue_ball);
+  w.text(outcomeOf(shot).cue_ball);
   w.integer(static_cast<std::int64_t>(shot.run.ball_ids.size()));
   for (const std::string& id : shot.run.ball_ids) w.text(id);
-  const physics::ClothParams& c = shot.cloth;
+  const physics::ClothParams& c = clothOf(shot);
   for (double x : {c.radius_m, c.gravity_mps2, c.sliding_friction, c.rolling_friction,
                    c.spinning_friction})
     w.number(x);
@@ -121,8 +121,9 @@ std::string shotRunBytes(const ShotRun& shot) {
       w.integer(p.pocketed);
     }
   }
-  w.integer(static_cast<std::int64_t>(shot.beyond_model_range.size()));
-  for (long index : shot.beyond_model_range) w.integer(index);
+  const std::vector<long>& beyond = beyondModelRangeOf(shot);
+  w.integer(static_cast<std::int64_t>(beyond.size()));
+  for (long index : beyond) w.integer(index);
   return w.take();
 }
 
@@ -133,7 +134,7 @@ ShotRun shotRunFromBytes(const std::string& bytes) {
   const std::string cue_ball = r.text();
   shot.run.ball_ids.resize(r.count(8));
   for (std::string& id : shot.run.ball_ids) id = r.text();
-  physics::ClothParams& c = shot.cloth;
+  physics::ClothParams& c = shot.cloth.emplace();
   for (double* x : {&c.radius_m, &c.gravity_mps2, &c.sliding_friction, &c.rolling_friction,
                     &c.spinning_friction})
     *x = r.number();
@@ -176,8 +177,8 @@ ShotRun shotRunFromBytes(const std::string& bytes) {
       p.pocketed = r.integer() != 0;
     }
   }
-  shot.beyond_model_range.resize(r.count(8));
-  for (long& index : shot.beyond_model_range) {
+  std::vector<long>& beyond = shot.beyond_model_range.emplace(r.count(8));
+  for (long& index : beyond) {
     index = static_cast<long>(r.integer());
     if (index < 0 || static_cast<std::size_t>(index) >= result.events.size()) Reader::bad();
   }

@@ -5,11 +5,12 @@
 
 #include <string>
 
-#include "python/result_bindings.h"
+#include "python/shot_run.h"
 
 namespace baize::python {
 
-std::string shotRunBytes(const ShotRun& shot);
+// Makes the shot's derived parts first (python/shot_run.h): a result unpickled has no scene.
+std::string shotRunBytes(ShotRun& shot);
 // Throws pybind11::value_error when `bytes` is not what shotRunBytes wrote.
 ShotRun shotRunFromBytes(const std::string& bytes);
 

@@ -93,8 +93,33 @@ py::array_t<double> positionsOf(const engine::Scene& scene) {
 
 }  // namespace
 
+std::shared_ptr<const engine::Scene> sceneArgument(py::handle argument, const std::string& name) {
+  // A baize.Scene itself (not a subclass) holding its scene is read straight from pybind11's record
+  // of the class, looked up once: the general cast below looks it up by the type's name each time.
+  static const py::detail::type_info* const bound = py::detail::get_type_info(typeid(engine::Scene));
+  if (Py_TYPE(argument.ptr()) == bound->type) {
+    const py::detail::value_and_holder held =
+        reinterpret_cast<py::detail::instance*>(argument.ptr())->get_value_and_holder(bound);
+    if (held.holder_constructed()) return held.holder<std::shared_ptr<engine::Scene>>();
+  }
+  py::detail::make_caster<std::shared_ptr<engine::Scene>> scene;
+  bool loaded = false;
+  try {
+    loaded = scene.load(argument, /*convert=*/false);
+  } catch (const py::cast_error&) {
+    // A Scene object whose __init__ never ran (Scene.__new__(Scene)): it holds no scene.
+  }
+  if (!loaded) {
+    throw py::type_error(name + " is of type " + std::string(Py_TYPE(argument.ptr())->tp_name) +
+                         (py::isinstance<engine::Scene>(argument) ? " holding no scene" : "") +
+                         ", not a baize.Scene made by baize.Scene(...), load_scene or random_shots");
+  }
+  return py::detail::cast_op<std::shared_ptr<engine::Scene>>(scene);
+}
+
 void bindScene(py::module_& module) {
-  py::class_<engine::Scene>(module, "Scene",
+  // Held by shared_ptr: a Result keeps its scene for what it derives on first use (shot_run.h).
+  py::class_<engine::Scene, std::shared_ptr<engine::Scene>>(module, "Scene",
                             "A table, a ball set, the balls and the cue's shot (docs/scenes.md).")
       .def(py::init(&sceneFromValues), py::arg("table"), py::arg("ball_set"), py::arg("shot"),
            py::arg("balls") = py::none(), py::arg("rack") = py::none(),

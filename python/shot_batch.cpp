@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <optional>
 #include <stdexcept>
 #include <thread>
 
 #include "python/result_bindings.h"
+#include "python/scene_bindings.h"
 
 namespace baize::python {
 namespace {
@@ -31,7 +31,7 @@ struct BatchEntry {
   ShotError error;
 };
 
-BatchEntry runEntry(const engine::Scene& scene, long index) {
+BatchEntry runEntry(const std::shared_ptr<const engine::Scene>& scene, long index) {
   BatchEntry entry;
   try {
     entry.shot = runShot(scene);
@@ -55,12 +55,13 @@ int threadsFor(int asked, std::size_t shots) {
 
 // Each thread takes the next shot not yet taken, so the threads stay busy whatever the shots cost;
 // each shot's result goes to its own slot, so the order is the input's.
-std::vector<BatchEntry> runAll(const std::vector<const engine::Scene*>& scenes, int threads) {
+std::vector<BatchEntry> runAll(const std::vector<std::shared_ptr<const engine::Scene>>& scenes,
+                               int threads) {
   std::vector<BatchEntry> entries(scenes.size());
   std::atomic<std::size_t> next{0};
   auto work = [&] {
     for (std::size_t i = next++; i < scenes.size(); i = next++)
-      entries[i] = runEntry(*scenes[i], static_cast<long>(i));
+      entries[i] = runEntry(scenes[i], static_cast<long>(i));
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(work);
@@ -73,15 +74,9 @@ py::list simulateMany(const py::iterable& scenes_in, int threads, const std::str
   if (on_error != "raise" && on_error != "return") {
     throw py::value_error("on_error = '" + on_error + "' is not allowed: it must be 'raise' or 'return'");
   }
-  std::vector<const engine::Scene*> scenes;
-  for (const py::handle item : scenes_in) {
-    if (!py::isinstance<engine::Scene>(item)) {
-      throw py::type_error("scenes[" + std::to_string(scenes.size()) + "] is a " +
-                           py::str(py::type::handle_of(item).attr("__name__")).cast<std::string>() +
-                           ", not a baize.Scene");
-    }
-    scenes.push_back(&item.cast<const engine::Scene&>());
-  }
+  std::vector<std::shared_ptr<const engine::Scene>> scenes;
+  for (const py::handle item : scenes_in)
+    scenes.push_back(sceneArgument(item, "scenes[" + std::to_string(scenes.size()) + "]"));
   const int used = threadsFor(threads, scenes.size());
   std::vector<BatchEntry> entries;
   {
@@ -92,7 +87,7 @@ py::list simulateMany(const py::iterable& scenes_in, int threads, const std::str
   py::list errors;
   for (BatchEntry& entry : entries) {
     if (entry.shot) {
-      results.append(py::cast(std::move(*entry.shot)));
+      results.append(resultObject(std::move(*entry.shot)));
     } else {
       py::object error = py::cast(entry.error);
       results.append(error);
@@ -109,22 +104,6 @@ py::list simulateMany(const py::iterable& scenes_in, int threads, const std::str
     throw py::error_already_set();
   }
   return results;
-}
-
-// The wall time of each of `repeats` runs of the shot in C++ alone (what simulate() does without
-// Python, the result made and freed), ns: the reference of tools/bench_python.py's binding-overhead ratio.
-std::vector<double> nativeRunTimes(const engine::Scene& scene, int repeats) {
-  if (repeats < 1) throw py::value_error("repeats = " + std::to_string(repeats) + " must be >= 1");
-  const py::gil_scoped_release released;
-  std::vector<double> times_ns;
-  for (int k = 0; k < repeats; ++k) {
-    // The result's whole life, as in the Python loop, which drops each result as it goes.
-    const auto start = std::chrono::steady_clock::now();
-    { const ShotRun shot = runShot(scene); }
-    const auto stop = std::chrono::steady_clock::now();
-    times_ns.push_back(std::chrono::duration<double, std::nano>(stop - start).count());
-  }
-  return times_ns;
 }
 
 }  // namespace
@@ -150,17 +129,6 @@ void bindShotBatch(py::module_& module) {
                "', message=" + py::repr(py::str(e.message)).cast<std::string>() + ")";
       });
 
-  module.def(
-      "simulate",
-      [](const engine::Scene& scene) {
-        const py::gil_scoped_release released;
-        return runShot(scene);
-      },
-      py::arg("scene"),
-      "Strikes the cue ball and simulates until every ball is at rest or pocketed. Returns a "
-      "Result. A shot the engine cannot finish raises ValueError (bad input) or RuntimeError.");
-  module.def("_native_run_times_ns", &nativeRunTimes, py::arg("scene"), py::arg("repeats"),
-             "For benchmarks: the wall time of each of `repeats` runs of the shot in C++, ns.");
   module.def("simulate_many", &simulateMany, py::arg("scenes"), py::arg("threads") = 0,
              py::arg("on_error") = "raise",
              "Simulates every scene on `threads` threads (0: every core) with the GIL released. "

@@ -62,7 +62,7 @@ break_flags=()
 "$baize" bench cushion --from-scene assets/scenes/9-ball-break.json "${break_flags[@]}" \
   --csv "$work/cushion-break.csv" > "$work/cushion-break.txt"
 progress "Python package"
-python_bench=(/usr/bin/python3 tools/bench_python.py)
+python_bench=(/usr/bin/python3 tools/bench_python.py --baize "$baize")
 [[ $quick -eq 1 ]] && python_bench+=(--quick)
 if [[ -d "$(dirname "$baize")/python/baize" ]]; then
   PYTHONPATH="$(dirname "$baize")/python" "${python_bench[@]}" > "$work/python.md"

@@ -1,5 +1,6 @@
 """baize.simulate and its Result: events, final positions, pocketed balls, samples."""
 import pickle
+import threading
 
 import numpy as np
 import pytest
@@ -89,8 +90,56 @@ def test_a_shot_that_cannot_finish_raises(scenes_dir):
 
 
 def test_simulate_wants_a_scene():
-    with pytest.raises(TypeError):
+    with pytest.raises(TypeError, match="scene is of type str, not a baize.Scene"):
         baize.simulate("9-ball-break.json")
+    with pytest.raises(TypeError, match="holding no scene"):
+        baize.simulate(baize.Scene.__new__(baize.Scene))
+    scene = baize.random_shots(1, seed=1)[0]
+    assert baize.simulate(scene=scene).events == baize.simulate(scene).events
+
+    class MyScene(baize.Scene):  # a subclass goes the general way, with the same result
+        pass
+
+    mine = MyScene(table="pool-9ft", ball_set="pool", balls={"cue": (-0.6, 0.0), "1": (0.4, 0.02)},
+                   shot={"aim_at": "1", "speed_mps": 2.5})
+    same = baize.Scene(table="pool-9ft", ball_set="pool", balls={"cue": (-0.6, 0.0), "1": (0.4, 0.02)},
+                       shot={"aim_at": "1", "speed_mps": 2.5})
+    assert baize.simulate(mine).events == baize.simulate(same).events
+    with pytest.raises(TypeError, match="one argument, scene; got 0 by position"):
+        baize.simulate()
+    with pytest.raises(TypeError, match="got 2 by position"):
+        baize.simulate(scene, scene)
+    with pytest.raises(TypeError, match="no argument 'scenes'"):
+        baize.simulate(scenes=scene)
+
+
+def test_a_result_pickled_before_it_is_read_answers_as_one_read_first(scenes_dir):
+    # pocketed, foul, beyond_model_range and sample's cloth are derived on first use.
+    scene = baize.load_scene(str(scenes_dir / "8-ball-break.json"))
+    read, unread = baize.simulate(scene), baize.simulate(scene)
+    answers = (read.pocketed, read.first_ball_hit, read.foul, read.beyond_model_range)
+    copy = pickle.loads(pickle.dumps(unread))
+    assert (copy.pocketed, copy.first_ball_hit, copy.foul, copy.beyond_model_range) == answers
+    assert answers[3], "the break has impacts beyond the model's range, so the check means something"
+    times = np.linspace(0, read.end_time, 9)
+    assert copy.sample(times).tobytes() == read.sample(times).tobytes()
+
+
+def test_shots_simulated_on_python_threads_are_the_same_as_in_turn():
+    scenes = baize.random_shots(40, seed=5)
+    alone = [baize.simulate(s).events for s in scenes]
+    together = [None] * len(scenes)
+
+    def work(first):
+        for k in range(first, len(scenes), 2):
+            together[k] = baize.simulate(scenes[k]).events
+
+    threads = [threading.Thread(target=work, args=(first,)) for first in (0, 1)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert together == alone
 
 
 def test_cushion_impact_head_on_rolling():

@@ -36,7 +36,7 @@ def test_a_failed_shot_keeps_the_others():
 
 
 def test_bad_arguments_are_named():
-    with pytest.raises(TypeError, match=r"scenes\[1\] is a str"):
+    with pytest.raises(TypeError, match=r"scenes\[1\] is of type str"):
         baize.simulate_many([baize.random_shots(1)[0], "x"])
     with pytest.raises(ValueError, match="threads = -1"):
         baize.simulate_many([], threads=-1)
