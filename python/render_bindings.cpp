@@ -27,15 +27,18 @@ void checkSide(const char* name, int pixels) {
 }
 
 void renderPng(const engine::Scene& scene, const std::string& path,
-               std::optional<const ShotRun*> result, int width, int height, const std::string& view,
+               std::optional<ShotRun*> result, int width, int height, const std::string& view,
                bool legend) {
   checkSide("width", width);
   checkSide("height", height);
   if (view != "top" && view != "angled")
     throw py::value_error("view = '" + view + "' is not allowed: it must be 'top' or 'angled'");
   if (path.empty()) throw py::value_error("path is empty: name the PNG file to write");
+  // The result's trajectories, recorded now if they were not yet: under the GIL, as it changes
+  // the result.
+  const engine::SceneRun* recorded = result ? &recordedRunOf(**result) : nullptr;
   const py::gil_scoped_release released;
-  const engine::SceneRun run = result ? (**result).run : engine::runScene(scene, true);
+  const engine::SceneRun run = recorded ? *recorded : engine::runScene(scene, true);
   const render::ShotRecord record = render::shotRecordOf(scene, run);
   render::OsmesaContext context;
   render::GlRenderer renderer(context);

@@ -67,7 +67,7 @@ py::array_t<double> sample(ShotRun& shot, const py::array_t<double, py::array::f
                             " is not allowed: a time must be finite and >= 0 s");
     }
   }
-  const auto& trajectories = shot.run.result.trajectories;
+  const auto& trajectories = recordedRunOf(shot).result.trajectories;
   const physics::ClothParams& cloth = clothOf(shot);
   py::array_t<double> positions(
       {static_cast<py::ssize_t>(trajectories.size()), t.shape(0), py::ssize_t{2}});

@@ -93,7 +93,7 @@ std::string shotRunBytes(ShotRun& shot) {
   for (double x : {c.radius_m, c.gravity_mps2, c.sliding_friction, c.rolling_friction,
                    c.spinning_friction})
     w.number(x);
-  const engine::SimulationResult& r = shot.run.result;
+  const engine::SimulationResult& r = recordedRunOf(shot).result;  // with its trajectories
   w.integer(static_cast<std::int64_t>(r.events.size()));
   for (const engine::Event& e : r.events) {
     w.number(e.time_s);
@@ -131,6 +131,7 @@ ShotRun shotRunFromBytes(const std::string& bytes) {
   Reader r(bytes);
   if (bytes.size() < sizeof(std::int64_t) || r.integer() != kLayoutVersion) Reader::bad();
   ShotRun shot;
+  shot.trajectories_recorded = true;  // read below: an unpickled result has no scene to run again
   const std::string cue_ball = r.text();
   shot.run.ball_ids.resize(r.count(8));
   for (std::string& id : shot.run.ball_ids) id = r.text();

@@ -47,11 +47,10 @@ def clock_costs_ns(count):
 
 
 def single_shot_figures(shots, repeats):
-    """Per shot, the median over `repeats` runs of: baize.simulate; in C++, engine::runScene
-    recording trajectories (what simulate runs) and without them (what `baize bench shots` times),
-    each result freed. The three run in turn, so that they see the same load, and each clock's own
-    cost is taken off its times. Returns the medians over shots of those times (ns) and of the
-    per-shot ratios simulate / C++."""
+    """Per shot, the median over `repeats` runs of: baize.simulate; and in C++, engine::runScene as
+    simulate runs it and `baize bench shots` times it (no trajectories), its result freed. The two
+    run in turn, so that they see the same load, and each clock's own cost is taken off its times.
+    Returns the medians over shots of those times (ns) and of the per-shot ratios simulate / C++."""
     clock, simulate, native = time.perf_counter_ns, baize.simulate, _baize._native_run_times_ns
     per_shot = []
     with one_core():
@@ -59,20 +58,17 @@ def single_shot_figures(shots, repeats):
             simulate(scene)
         python_clock_ns, native_clock_ns = clock_costs_ns(len(shots) * repeats)
         for scene in shots:
-            python_ns, recorded_ns, plain_ns = [], [], []
+            python_ns, native_ns = [], []
             for _ in range(repeats):
                 start = clock()
                 simulate(scene)
                 python_ns.append(clock() - start - python_clock_ns)
-                recorded_ns.append(native(scene, 1, True)[0] - native_clock_ns)
-                plain_ns.append(native(scene, 1, False)[0] - native_clock_ns)
-            per_shot.append([statistics.median(t) for t in (python_ns, recorded_ns, plain_ns)])
-    python_ns, recorded_ns, plain_ns = zip(*per_shot)
+                native_ns.append(native(scene, 1, False)[0] - native_clock_ns)
+            per_shot.append([statistics.median(t) for t in (python_ns, native_ns)])
+    python_ns, native_ns = zip(*per_shot)
     return {"python_us": statistics.median(python_ns) / 1e3,
-            "recorded_us": statistics.median(recorded_ns) / 1e3,
-            "plain_us": statistics.median(plain_ns) / 1e3,
-            "ratio_recorded": statistics.median(p / r for p, r, _ in per_shot),
-            "ratio_plain": statistics.median(p / q for p, _, q in per_shot),
+            "native_us": statistics.median(native_ns) / 1e3,
+            "ratio": statistics.median(p / q for p, q in per_shot),
             "python_clock_ns": python_clock_ns, "native_clock_ns": native_clock_ns}
 
 
@@ -180,9 +176,8 @@ def main():
         "",
         f"- `baize.simulate`, one random single shot ({single} shots x {repeats} runs on one core, "
         f"interleaved with the same shot in C++ in the same process): median {s['python_us']:.2f} "
-        f"us against {s['recorded_us']:.2f} us for `engine::runScene` recording trajectories as "
-        f"`simulate` does, ratio {s['ratio_recorded']:.3f}; against {s['plain_us']:.2f} us without "
-        f"recording (what `baize bench shots` times), ratio {s['ratio_plain']:.3f} (ratios: median "
+        f"us against {s['native_us']:.2f} us for `engine::runScene` (what `baize bench shots` "
+        f"times), ratio {s['ratio']:.3f} (ratios: median "
         "over shots of each shot's median times; each clock's own cost, measured empty, taken off: "
         f"{s['python_clock_ns']:.0f} ns in Python, {s['native_clock_ns']:.0f} ns in C++).",
         f"- `baize.simulate_many` on {batch} random shots: {one:.0f} shots/s on 1 thread (one core), "

@@ -125,6 +125,18 @@ def test_a_result_pickled_before_it_is_read_answers_as_one_read_first(scenes_dir
     assert copy.sample(times).tobytes() == read.sample(times).tobytes()
 
 
+def test_sampling_records_the_same_run_as_the_one_simulated(scenes_dir):
+    # The trajectories are recorded when first sampled, by running the shot again: what the result
+    # showed before must not change, and the samples must end where the balls stopped.
+    result = baize.simulate(baize.load_scene(str(scenes_dir / "9-ball-break.json")))
+    before = ([(e.time, e.kind, e.balls) for e in result.events], result.final_positions.tobytes())
+    samples = result.sample([result.end_time])
+    after = ([(e.time, e.kind, e.balls) for e in result.events], result.final_positions.tobytes())
+    assert before == after and len(before[0]) > 50
+    down = [i for i, b in enumerate(result.ball_ids) if b not in dict(result.pocketed)]
+    np.testing.assert_array_equal(samples[down, 0, :], result.final_positions[down])
+
+
 def test_shots_simulated_on_python_threads_are_the_same_as_in_turn():
     scenes = baize.random_shots(40, seed=5)
     alone = [baize.simulate(s).events for s in scenes]
