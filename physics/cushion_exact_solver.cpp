@@ -649,7 +649,8 @@ CushionImpactResult solveCushionImpactExact(const CushionParams& params,
   validateCushionParams(params);
   validateIncomingBall(incoming);
   validateExactSolverOptions(options);
-  return ExactImpact(params, incoming, options).run();
+  const CushionParams at_speed = paramsAtIncidentSpeed(params, incoming);
+  return ExactImpact(at_speed, incoming, options).run();
 }
 
 }  // namespace baize::physics

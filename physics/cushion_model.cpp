@@ -39,6 +39,8 @@ void validateCushionParams(const CushionParams& p) {
                 "it must lie in [" + valueText(kMinRestitution) +
                     ", 1] (below it the exact solver could lose the rebound)");
   }
+  if (p.restitution_speed_dependence)
+    validateRestitutionSpeedDependence(*p.restitution_speed_dependence);
   const double s = contactSinTheta(p);
   const double c = std::sqrt(1 - s * s);
   const double tan_theta = s / c;
@@ -65,6 +67,15 @@ void validateCushionParams(const CushionParams& p) {
                               (s + p.cushion_friction * c)) +
                     ", or friction could (nearly) hold the ball against the cushion");
   }
+}
+
+CushionParams paramsAtIncidentSpeed(const CushionParams& params, const BallVelocity& incoming) {
+  if (!params.restitution_speed_dependence) return params;
+  CushionParams at_speed = params;
+  at_speed.restitution = restitutionAtSpeed(params.restitution, *params.restitution_speed_dependence,
+                                            incoming.v.y(), kMinRestitution);
+  at_speed.restitution_speed_dependence.reset();
+  return at_speed;
 }
 
 BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_radps,

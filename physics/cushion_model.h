@@ -11,8 +11,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "physics/cushion_restitution_speed.h"
 
 namespace baize::physics {
 
@@ -26,6 +29,9 @@ struct CushionParams {
   double restitution = 0.98;       // e_e, energetic coefficient (Stronge), in [1e-6, 1]
   double cushion_friction = 0.14;  // mu_w, ball on cushion nose
   double cloth_friction = 0.212;   // mu_s, ball on cloth
+  // Given: e_e above is e_0, and falls with the normal incident speed above a knee
+  // (cushion_restitution_speed.h). None, the default: constant, as in the paper.
+  std::optional<RestitutionSpeedDependence> restitution_speed_dependence;
 };
 
 // The ball radii the impact models accept, m. Cue-sport balls are 47.6 to 68 mm; the models are
@@ -72,6 +78,21 @@ struct BallVelocity {
   Eigen::Vector3d w = Eigen::Vector3d::Zero();  // angular velocity, rad/s
 };
 
+// Whether the impact's outcome scales with the incoming ball: scaling its velocity and spin by
+// lambda scales every outgoing one by lambda (the paper's model, e_e constant). A solver or table
+// that relies on it (the table of rolling impacts, cushion_rolling_surface.h) may answer only
+// when this holds; otherwise the impact goes to the exact solver. False when the restitution
+// falls with speed.
+// Inline: the default cushion path asks it at every impact.
+inline bool impactScalesWithSpeed(const CushionParams& params) {
+  return !params.restitution_speed_dependence ||
+         params.restitution_speed_dependence->falloff_exponent == 0;
+}
+
+// The parameters one impact is solved with: with a speed dependence, e_e at the ball's normal
+// incident speed v_y (never below kMinRestitution) and no dependence left; else `params`.
+CushionParams paramsAtIncidentSpeed(const CushionParams& params, const BallVelocity& incoming);
+
 // The incoming ball of the paper's Fig. 2, with the spins assigned the physically right way round
 // (the Mathavan 2010 text prints them swapped): v = V0 (cos a, sin a, 0), w = (-wT sin a, wT cos a,
 // wS). alpha is measured from the cushion line (pi/2 is head-on); topspin wT = V0/R is natural
@@ -85,6 +106,7 @@ BallVelocity incomingBall(double speed_mps, double alpha_rad, double topspin_rad
 // solver's step budget).
 inline constexpr double kMaxBallSpeed_mps = 1e3;
 inline constexpr double kMaxBallSpin_radps = 1e6;
+static_assert(kMaxKneeSpeed_mps == kMaxBallSpeed_mps, "a knee above every ball is never reached");
 // The smallest normal approach speed an impact model resolves, m/s. Approach speeds near the
 // subnormal range (found by fuzzing: 5e-324 m/s at a cushion, 1e-311 m/s between balls) make the
 // impulse scales and first steps underflow to zero, and the solvers stall. The event loop never

@@ -16,11 +16,12 @@ ImpactSample sampleOf(const CushionParams& params, double P, const BallVelocity&
 
 }  // namespace
 
-CushionImpactResult solveCushionImpactPaper(const CushionParams& params,
+CushionImpactResult solveCushionImpactPaper(const CushionParams& given,
                                             const BallVelocity& incoming,
                                             const PaperSolverOptions& options) {
-  validateCushionParams(params);
+  validateCushionParams(given);
   validateIncomingBall(incoming);
+  const CushionParams params = paramsAtIncidentSpeed(given, incoming);
   if (options.steps < 1 || options.steps > kMaxPaperSteps) {
     rejectValue("paper solver steps", options.steps,
                 "it must lie in [1, " + std::to_string(kMaxPaperSteps) + "]");

@@ -3,12 +3,25 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <tuple>
 
 #include "physics/cushion_exact_solver.h"
+#include "physics/value_text.h"
 
 namespace baize::physics {
 namespace {
+
+// The table holds outcomes per unit of incoming speed: it is right only where they scale with it.
+void requireScalesWithSpeed(const CushionParams& params) {
+  if (!impactScalesWithSpeed(params)) {
+    throw std::invalid_argument(
+        "the table of rolling cushion impacts needs an outcome that scales with the incoming "
+        "speed; a speed-dependent restitution (falloff exponent " +
+        valueText(params.restitution_speed_dependence->falloff_exponent) +
+        ") must go to the exact solver");
+  }
+}
 
 // The exact solver's tolerance at the nodes and check points: its error there (about 1e-12 V0)
 // stays three decades below kCellCheckError, so a cell's check measures its interpolation error.
@@ -115,6 +128,7 @@ Outputs exactOutputs(const CushionParams& params, double alpha, double sigma) {
 CushionRollingSurface::CushionRollingSurface(const CushionParams& params)
     : params_(params), roots_(kRootCellsAlpha * kRootCellsSidespin) {
   validateCushionParams(params);
+  requireScalesWithSpeed(params);
 }
 
 CushionRollingSurface::~CushionRollingSurface() = default;
@@ -248,6 +262,7 @@ RollingSurfaceStats CushionRollingSurface::stats() const {
 }
 
 CushionRollingSurface& rollingSurfaceFor(const CushionParams& params) {
+  requireScalesWithSpeed(params);  // before the per-thread shortcut: its key omits the law
   using Key = std::tuple<double, double, double, double, double, double>;
   const Key key{params.mass_kg,     params.radius_m,         params.contact_height_m,
                 params.restitution, params.cushion_friction, params.cloth_friction};

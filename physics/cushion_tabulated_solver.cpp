@@ -8,6 +8,7 @@ CushionImpactResult solveCushionImpactTabulated(const CushionParams& params,
                                                 const BallVelocity& incoming,
                                                 const ExactSolverOptions& options) {
   validateExactSolverOptions(options);
+  if (!impactScalesWithSpeed(params)) return solveCushionImpactExact(params, incoming, options);
   if (std::optional<BallVelocity> answered = rollingSurfaceFor(params).answer(incoming)) {
     CushionImpactResult result;
     result.after = *answered;

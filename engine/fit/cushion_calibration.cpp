@@ -24,12 +24,20 @@ constexpr double kDifferenceStep = 1e-5;
 // the edge is moved inside by this share.
 constexpr double kOpenEdgeShare = 1e-9;
 
+// The law of `p`, made from kSpeedDependenceFitStart when it has none (its parameters fitted).
+physics::RestitutionSpeedDependence& speedDependenceOf(physics::CushionParams& p) {
+  if (!p.restitution_speed_dependence) p.restitution_speed_dependence = kSpeedDependenceFitStart;
+  return *p.restitution_speed_dependence;
+}
+
 double& field(physics::CushionParams& p, CushionFitParameter parameter) {
   switch (parameter) {
     case CushionFitParameter::Restitution: return p.restitution;
     case CushionFitParameter::Friction: return p.cushion_friction;
     case CushionFitParameter::ContactHeight: return p.contact_height_m;
     case CushionFitParameter::SlidingFriction: return p.cloth_friction;
+    case CushionFitParameter::KneeSpeed: return speedDependenceOf(p).knee_speed_mps;
+    case CushionFitParameter::FalloffExponent: return speedDependenceOf(p).falloff_exponent;
   }
   throw std::logic_error("unknown cushion fit parameter");
 }
@@ -136,6 +144,11 @@ void boundsOf(const CushionCalibrationSetup& setup, LeastSquaresProblem* problem
         step = kDifferenceStep * R;
         break;
       case CushionFitParameter::SlidingFriction: upper = 1 - kOpenEdgeShare; break;
+      case CushionFitParameter::KneeSpeed:  // m/s; the step as for the others, per 1 m/s
+        lower = kOpenEdgeShare;
+        upper = physics::kMaxKneeSpeed_mps;
+        break;
+      case CushionFitParameter::FalloffExponent: upper = physics::kMaxFalloffExponent; break;
     }
     problem->lower[i] = lower;
     problem->upper[i] = upper;
@@ -164,21 +177,37 @@ std::string fitParameterName(CushionFitParameter parameter) {
     case CushionFitParameter::Friction: return "friction";
     case CushionFitParameter::ContactHeight: return "contact_height_m";
     case CushionFitParameter::SlidingFriction: return "sliding_friction";
+    case CushionFitParameter::KneeSpeed: return "knee_speed_mps";
+    case CushionFitParameter::FalloffExponent: return "falloff_exponent";
   }
   return "";
 }
 
+namespace {
+
+constexpr CushionFitParameter kAllFitParameters[] = {
+    CushionFitParameter::Restitution,     CushionFitParameter::Friction,
+    CushionFitParameter::ContactHeight,   CushionFitParameter::SlidingFriction,
+    CushionFitParameter::KneeSpeed,       CushionFitParameter::FalloffExponent};
+
+}  // namespace
+
 std::vector<std::string> fitParameterNames() {
-  return {"restitution", "friction", "contact_height_m", "sliding_friction"};
+  std::vector<std::string> names;
+  for (CushionFitParameter p : kAllFitParameters) names.push_back(fitParameterName(p));
+  return names;
 }
 
 std::optional<CushionFitParameter> fitParameterNamed(const std::string& name) {
-  for (CushionFitParameter p :
-       {CushionFitParameter::Restitution, CushionFitParameter::Friction,
-        CushionFitParameter::ContactHeight, CushionFitParameter::SlidingFriction}) {
+  for (CushionFitParameter p : kAllFitParameters) {
     if (fitParameterName(p) == name) return p;
   }
   return std::nullopt;
+}
+
+bool isSpeedDependenceParameter(CushionFitParameter parameter) {
+  return parameter == CushionFitParameter::KneeSpeed ||
+         parameter == CushionFitParameter::FalloffExponent;
 }
 
 physics::CushionParams calibrationStart(const Table& table, const BallSet& ball_set) {
@@ -218,13 +247,13 @@ CushionCalibration calibrateCushion(const std::vector<CushionMeasurement>& measu
         " measured values, fewer than the " + std::to_string(n) +
         " parameters fitted: at least as many are needed");
   }
-  checkPointsSolve(kept, setup.start);
+  Eigen::VectorXd start(n);
+  physics::CushionParams first = setup.start;  // with a law when its parameters are fitted
+  for (int i = 0; i < n; ++i) start[i] = field(first, setup.fitted[i]);
+  checkPointsSolve(kept, first);
   LeastSquaresProblem problem;
   problem.residuals = std::cref(evaluator);
   boundsOf(setup, &problem);
-  Eigen::VectorXd start(n);
-  physics::CushionParams first = setup.start;
-  for (int i = 0; i < n; ++i) start[i] = field(first, setup.fitted[i]);
   const LeastSquaresFit fit = fitLeastSquares(problem, start);
   out.values = fit.x;
   out.params = paramsAt(setup, fit.x);

@@ -17,10 +17,18 @@
 
 namespace baize::engine {
 
-enum class CushionFitParameter { Restitution, Friction, ContactHeight, SlidingFriction };
+enum class CushionFitParameter {
+  Restitution,
+  Friction,
+  ContactHeight,
+  SlidingFriction,
+  KneeSpeed,        // the speed dependence of the restitution (physics/cushion_restitution_speed.h)
+  FalloffExponent,
+};
 
 // Named as a scene's physics groups name them: "restitution", "friction", "contact_height_m"
-// (physics.cushion) and "sliding_friction" (physics.cloth).
+// (physics.cushion), "sliding_friction" (physics.cloth), "knee_speed_mps" and "falloff_exponent"
+// (physics.cushion.restitution_speed_dependence).
 std::string fitParameterName(CushionFitParameter parameter);
 std::optional<CushionFitParameter> fitParameterNamed(const std::string& name);
 std::vector<std::string> fitParameterNames();
@@ -28,8 +36,17 @@ std::vector<std::string> fitParameterNames();
 // The rigid model's range as the paper fitted it: points faster than this are left out by default.
 inline constexpr double kDefaultCalibrationMaxSpeed_mps = 1.5;
 
+// Whether `parameter` belongs to the restitution's speed dependence.
+bool isSpeedDependenceParameter(CushionFitParameter parameter);
+
+// Where a fit of the speed dependence starts when the start values have none: the knee at the
+// paper's stated range of the rigid model (2.5 m/s), the exponent midway in [0, 1].
+inline constexpr physics::RestitutionSpeedDependence kSpeedDependenceFitStart{2.5, 0.5};
+
 struct CushionCalibrationSetup {
-  physics::CushionParams start;  // the ball, the values held fixed and the fitted ones' start
+  // The ball, the values held fixed and the fitted ones' start. Fitting the speed dependence
+  // starts from its law, or kSpeedDependenceFitStart when it has none.
+  physics::CushionParams start;
   std::vector<CushionFitParameter> fitted = {CushionFitParameter::Restitution,
                                              CushionFitParameter::Friction};
   double max_speed_mps = kDefaultCalibrationMaxSpeed_mps;  // faster points are left out

@@ -10,16 +10,12 @@
 #include <string>
 
 #include "engine/io/json_reader.h"
+#include "engine/io/table.h"
 #include "engine/models/model_registry.h"
 #include "engine/sim/shot_simulator.h"
 #include "physics/cue_strike.h"
 
 namespace baize::engine {
-
-// The normal speed (m/s, the ball's velocity into the cushion) up to which Mathavan, Jackson &
-// Parkin (2010) state their rigid-cushion model holds; impacts above it are reported, not changed.
-inline constexpr double kRigidCushionValidNormalSpeedMps = 2.5;
-inline constexpr const char* kValidNormalSpeedKey = "valid_normal_speed_mps";
 
 // What a scene overrides; an empty field keeps the default of the table and ball set. Units as in
 // the parameter structs they map to.
@@ -34,8 +30,8 @@ struct PhysicsOverrides {
   std::optional<nlohmann::json> cushion;
   std::optional<nlohmann::json> ball_ball;
   // physics.cushion.valid_normal_speed_mps: the normal speed up to which the cushion model is
-  // taken to hold (kRigidCushionValidNormalSpeedMps when not given). Read apart from the model's
-  // keys: it changes no result, only which impacts are reported beyond the model's range.
+  // taken to hold (the table's when not given). Read apart from the model's keys: it changes no
+  // result, only which impacts are reported beyond the model's range.
   std::optional<double> valid_normal_speed_mps;
   std::string source;  // the file they came from, for messages
   // physics.cue -> physics::CueStrikeParams

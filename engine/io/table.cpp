@@ -493,12 +493,14 @@ namespace {
 // The cushion model's defaults. Their bound against the nose height (mu_w < tan theta) needs the
 // ball's radius: scenes check it where the table meets the ball set.
 void readCushionDefaults(const JsonReader& cushion, Table* table) {
-  cushion.requireExactKeys({"restitution", "friction"});
+  cushion.requireKeys({"restitution", "friction"}, {kValidNormalSpeedKey});
   table->cushion_restitution = cushion.positiveNumber("restitution");
   if (!(table->cushion_restitution >= physics::kMinRestitution && table->cushion_restitution <= 1))
     cushion.reject("restitution", "it must lie in [" + physics::valueText(physics::kMinRestitution) +
                                       ", 1] (the energetic coefficient e_e)");
   table->cushion_friction = cushion.nonNegativeNumber("friction");
+  if (cushion.has(kValidNormalSpeedKey))
+    table->cushion_valid_normal_speed_mps = cushion.positiveNumber(kValidNormalSpeedKey);
 }
 
 }  // namespace

@@ -57,6 +57,11 @@ struct SnookerMarkings {
   Eigen::Vector2d yellow_spot_m, green_spot_m, brown_spot_m, blue_spot_m, pink_spot_m, black_spot_m;
 };
 
+// The normal speed (m/s, the ball's velocity into the cushion) up to which Mathavan, Jackson &
+// Parkin (2010) state their rigid-cushion model holds; impacts above it are reported, not changed.
+inline constexpr double kRigidCushionValidNormalSpeedMps = 2.5;
+inline constexpr const char* kValidNormalSpeedKey = "valid_normal_speed_mps";
+
 struct Table {
   std::string source;  // the file it was read from (or the document's name), for messages
   std::string name;
@@ -69,6 +74,9 @@ struct Table {
   // the Mathavan 2010 paper's snooker values). A scene's physics.cushion overrides them.
   double cushion_restitution = physics::CushionParams{}.restitution;  // e_e
   double cushion_friction = physics::CushionParams{}.cushion_friction;  // mu_w
+  // The normal speed (m/s) up to which the cushion model is taken to hold on this table (the
+  // "cushion" object's valid_normal_speed_mps); a scene's physics.cushion overrides it.
+  double cushion_valid_normal_speed_mps = kRigidCushionValidNormalSpeedMps;
   PocketSpec corner_pocket, side_pocket;
 
   // Counterclockwise from the bottom-left corner: corner (-x,-y), side (-y), corner (+x,-y),

@@ -7,7 +7,8 @@
 namespace baize::engine {
 
 double validNormalSpeedFor(const Scene& scene) {
-  return scene.overrides.valid_normal_speed_mps.value_or(kRigidCushionValidNormalSpeedMps);
+  return scene.overrides.valid_normal_speed_mps.value_or(
+      scene.table.cushion_valid_normal_speed_mps);
 }
 
 double impactNormalSpeedMps(const TableGeometry& table, const Event& event) {

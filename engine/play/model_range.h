@@ -13,7 +13,8 @@
 namespace baize::engine {
 
 // The normal speed the scene's impacts are checked against, m/s: its
-// physics.cushion.valid_normal_speed_mps, or kRigidCushionValidNormalSpeedMps.
+// physics.cushion.valid_normal_speed_mps, else its table's (kRigidCushionValidNormalSpeedMps unless
+// the table file gives one).
 double validNormalSpeedFor(const Scene& scene);
 
 // The speed (m/s) at which a Cushion or Jaw event's ball moves into the cushion or jaw just before

@@ -177,3 +177,19 @@ def test_render_png_writes_a_picture(tmp_path, scenes_dir):
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     with pytest.raises(ValueError, match="width"):
         baize.render_png(scene, str(path), width=1)
+
+
+def test_a_speed_dependent_restitution_passes_through_and_slows_a_fast_rebound():
+    def scene(cushion):
+        return baize.Scene(table="pool-9ft", ball_set="pool", balls={"cue": [0.0, 0.0]},
+                           shot={"heading_deg": 0, "speed_mps": 4, "height": 0.4},
+                           physics={"cushion": cushion})
+
+    def way_back(cushion):  # how far the cue ball is from the foot cushion 0.4 s after hitting it
+        result = baize.simulate(scene(cushion))
+        hit = next(e.time for e in result.events if e.kind == "cushion")
+        return 1.27 - result.sample([hit + 0.4])[result.ball_ids.index("cue"), 0, 0]
+    law = {"knee_speed_mps": 1.0, "falloff_exponent": 0.5}
+    assert 0 < way_back({"restitution_speed_dependence": law}) < 0.8 * way_back({})
+    with pytest.raises(ValueError, match="falloff_exponent"):
+        scene({"restitution_speed_dependence": {"knee_speed_mps": 1.0, "falloff_exponent": 3}})

@@ -72,6 +72,29 @@ cmp -s "$work/quiet.txt" <("$baize" calibrate "$work/model.csv") || fail "--quie
 grep -q "7 points .* 9 left out" "$work/text" || fail "left-out count: $(head -1 "$work/text")"
 grep -q "cannot separate restitution and friction" "$work/text" || fail "no separation note"
 
+# The speed dependence on the full snooker data: no point left out without --max-speed, the fitted
+# values as the shipped file holds them (to its rounding), the law in the JSON's model; with
+# --max-speed the fast points are left out again.
+"$baize" calibrate "$assets/measurements/snooker-head-on-rolling.csv" --table snooker-12ft \
+  --fit knee_speed_mps,falloff_exponent --json "$work/law.json" >"$work/text"
+grep -q "16 points .* 0 left out" "$work/text" || fail "speed dependence left points out: $(head -1 "$work/text")"
+python3 - "$work/law.json" "$assets/measurements/snooker-speed-dependence.json" <<'EOF_PY' || fail "law JSON check failed"
+import json, sys
+fit = json.load(open(sys.argv[1]))
+shipped = json.load(open(sys.argv[2]))["cushion"]["restitution_speed_dependence"]
+assert fit["fitted"] == ["knee_speed_mps", "falloff_exponent"], fit["fitted"]
+assert fit["knee_speed_mps_sd"] > 0 and fit["falloff_exponent_sd"] > 0
+for key in ("knee_speed_mps", "falloff_exponent"):
+    assert abs(fit[key] - shipped[key]) < 0.005, (key, fit[key], shipped[key])
+    assert fit["model"]["restitution_speed_dependence"][key] == fit[key]
+assert fit["model"]["restitution"] == 0.98 and fit["points_left_out"] == 0
+EOF_PY
+"$baize" calibrate "$assets/measurements/snooker-head-on-rolling.csv" --table snooker-12ft \
+  --fit restitution --knee-speed 2.12 --falloff-exponent 0.31 --max-speed 1.5 >"$work/text"
+grep -q "7 points .* 9 left out" "$work/text" || fail "--max-speed with a law: $(head -1 "$work/text")"
+expect_refused "knee_speed_mps = -2" "--knee-speed" -- "$baize" calibrate "$work/model.csv" --knee-speed -2
+expect_refused "knee_speed_mps, falloff_exponent" -- "$baize" calibrate "$work/model.csv" --fit knee
+
 # Bad input: named by line and column, flag and value.
 printf 'speed_mps,angle_deg,rebound_speed_mps\n1,90,0.7\n1,abc,0.7\n' >"$work/bad.csv"
 expect_refused "bad.csv line 3" "column angle_deg" "abc" -- "$baize" calibrate "$work/bad.csv"

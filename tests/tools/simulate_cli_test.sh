@@ -118,6 +118,11 @@ JSON
 out=$("$baize" simulate "$work/simple.json" --json "$work/simple-out.json") ||
   fail "simple-cushion scene exited $?"
 grep -q "^models: cushion simple, ball-ball frictional, squirt$" <<<"$out" || fail "models: $out"
+# The speed-dependent restitution is named in the models line.
+python3 -c "import json; print(json.dumps({'table': 'snooker-12ft', 'ball_set': 'snooker', 'balls': {'cue': [-1.2, 0.0]}, 'shot': {'heading_deg': 0, 'speed_mps': 3.5, 'height': 0.4}, 'physics': {'cushion': json.load(open('$root/assets/measurements/snooker-speed-dependence.json'))['cushion']}}))" >"$work/law.json"
+out=$("$baize" simulate "$work/law.json")
+grep -q "^models: cushion tabulated with speed-dependent restitution, ball-ball frictional$" <<<"$out" ||
+  fail "models with a law: $out"
 python3 - "$work/simple-out.json" <<'PY'
 import json, sys
 p = json.load(open(sys.argv[1]))["physics"]

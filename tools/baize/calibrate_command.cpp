@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -32,8 +33,12 @@ struct CalibrateFlags {
   std::string ball_set;  // empty: the set of the table's kind
   std::string fit = "restitution,friction";
   double max_speed_mps = engine::kDefaultCalibrationMaxSpeed_mps;
+  CLI::Option* max_speed_flag = nullptr;
   double e = 0, mu_w = 0, h = 0, mu_s = 0;  // --e, --mu-w, --h, --mu-s: start or fixed values
   CLI::Option *e_flag = nullptr, *mu_w_flag = nullptr, *h_flag = nullptr, *mu_s_flag = nullptr;
+  // --knee-speed, --falloff-exponent: the speed dependence's start or fixed values
+  physics::RestitutionSpeedDependence law = engine::kSpeedDependenceFitStart;
+  CLI::Option *knee_flag = nullptr, *falloff_flag = nullptr;
   int threads = 0;
   std::string png_path;
   std::string json_path;
@@ -59,9 +64,12 @@ std::vector<engine::CushionFitParameter> fittedOf(const std::string& list) {
   for (std::string name; std::getline(in, name, ',');) {
     const auto parameter = engine::fitParameterNamed(name);
     if (!parameter) {
+      std::string names;
+      for (const std::string& known : engine::fitParameterNames())
+        names += (names.empty() ? "" : ", ") + known;
       throw UsageError("--fit '" + list + "' is not allowed: '" + name +
-                       "' is not a parameter; the list takes restitution, friction, "
-                       "contact_height_m and sliding_friction, separated by commas");
+                       "' is not a parameter; the list takes " + names +
+                       ", separated by commas");
     }
     if (std::find(fitted.begin(), fitted.end(), *parameter) != fitted.end()) {
       throw UsageError("--fit '" + list + "' is not allowed: " + name + " is named twice");
@@ -83,12 +91,13 @@ physics::CushionParams startOf(const CalibrateFlags& flags) {
   if (flags.mu_w_flag->count()) p.cushion_friction = flags.mu_w;
   if (flags.h_flag->count()) p.contact_height_m = flags.h;
   if (flags.mu_s_flag->count()) p.cloth_friction = flags.mu_s;
+  if (flags.knee_flag->count() || flags.falloff_flag->count()) p.restitution_speed_dependence = flags.law;
   try {
     physics::validateCushionParams(p);
   } catch (const std::invalid_argument& refused) {
     throw UsageError(std::string("the starting values are refused: ") + refused.what() +
                      " (they come from --table " + flags.table + ", its ball set and --e, "
-                     "--mu-w, --h, --mu-s where given)");
+                     "--mu-w, --h, --mu-s, --knee-speed, --falloff-exponent where given)");
   }
   return p;
 }
@@ -98,6 +107,15 @@ void checkFlags(const CalibrateFlags& flags) {
   if (!(flags.max_speed_mps > 0)) rejectFlag("--max-speed", flags.max_speed_mps, "it must be > 0 (m/s)");
   if (!flags.png_path.empty()) checkOutputPath("--png", flags.png_path);
   if (!flags.json_path.empty()) checkOutputPath("--json", flags.json_path);
+}
+
+// The speed dependence is fitted to the fast points the rigid model leaves out: without
+// --max-speed, none are left out then.
+double maxSpeedOf(const CalibrateFlags& flags,
+                  const std::vector<engine::CushionFitParameter>& fitted) {
+  if (flags.max_speed_flag->count()) return flags.max_speed_mps;
+  const bool law = std::any_of(fitted.begin(), fitted.end(), engine::isSpeedDependenceParameter);
+  return law ? std::numeric_limits<double>::infinity() : flags.max_speed_mps;
 }
 
 void writeOutputs(const CalibrateFlags& flags, const engine::CushionCalibration& fit) {
@@ -118,7 +136,7 @@ void runCalibrate(const CalibrateFlags& flags) {
   engine::CushionCalibrationSetup setup;
   setup.fitted = fittedOf(flags.fit);
   setup.start = startOf(flags);
-  setup.max_speed_mps = flags.max_speed_mps;
+  setup.max_speed_mps = maxSpeedOf(flags, setup.fitted);
   setup.threads = threadsOfFlag(flags.threads);
   const std::vector<engine::CushionMeasurement> data = engine::readCushionMeasurements(flags.data);
   engine::CushionCalibration fit;
@@ -126,7 +144,7 @@ void runCalibrate(const CalibrateFlags& flags) {
     fit = engine::calibrateCushion(data, setup);
   } catch (const std::invalid_argument& refused) {
     throw UsageError(flags.data + ": " + refused.what() + " (--max-speed " +
-                     physics::valueText(flags.max_speed_mps) + ", --fit " + flags.fit + ")");
+                     physics::valueText(setup.max_speed_mps) + ", --fit " + flags.fit + ")");
   }
   // With the JSON on standard output this goes to standard error (tools/baize/standard_output.h).
   printCalibration(fit, std::cout);  // the result: --quiet drops only notes and progress
@@ -138,6 +156,8 @@ void addStartFlags(CLI::App* command, CalibrateFlags* flags) {
   flags->mu_w_flag = command->add_option("--mu-w", flags->mu_w, "cushion friction mu_w: start or fixed (default: the table's)");
   flags->h_flag = command->add_option("--h", flags->h, "nose height above the slate, m: start or fixed (default: the table's)");
   flags->mu_s_flag = command->add_option("--mu-s", flags->mu_s, "cloth friction mu_s: start or fixed (default: the table kind's cloth)");
+  flags->knee_flag = command->add_option("--knee-speed", flags->law.knee_speed_mps, "knee speed of the restitution's speed dependence, m/s: start or fixed (default 2.5; given, the dependence is on)");
+  flags->falloff_flag = command->add_option("--falloff-exponent", flags->law.falloff_exponent, "falloff exponent of the restitution's speed dependence: start or fixed (default 0.5; given, the dependence is on)");
 }
 
 }  // namespace
@@ -162,11 +182,14 @@ void addCalibrateCommand(CLI::App& parent) {
       ->check(notEmpty());
   command->add_option("--fit", flags->fit,
                       "the parameters fitted, separated by commas: restitution, friction, "
-                      "contact_height_m, sliding_friction")
+                      "contact_height_m, sliding_friction, knee_speed_mps, falloff_exponent")
       ->capture_default_str();
-  command->add_option("--max-speed", flags->max_speed_mps,
-                      "points with a faster incoming speed (m/s) are left out and counted")
-      ->capture_default_str();
+  flags->max_speed_flag =
+      command
+          ->add_option("--max-speed", flags->max_speed_mps,
+                       "points with a faster incoming speed (m/s) are left out and counted (default "
+                       "none when knee_speed_mps or falloff_exponent is fitted)")
+          ->capture_default_str();
   addStartFlags(command, flags.get());
   command->add_option("--threads", flags->threads, kThreadsHelp)->capture_default_str();
   command->add_option("--png", flags->png_path, "write a chart of measured and fitted rebound speeds")

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/models/cushion_mathavan2010.h"
+
 namespace baize::tools {
 namespace {
 
@@ -115,6 +117,10 @@ nlohmann::json calibrationJson(const engine::CushionCalibration& fit) {
                   {"restitution", fit.params.restitution},
                   {"friction", fit.params.cushion_friction},
                   {"sliding_friction", fit.params.cloth_friction}};
+  if (const auto& law = fit.params.restitution_speed_dependence) {
+    out["model"][engine::kRestitutionSpeedDependenceKey] =
+        engine::restitutionSpeedDependenceJson(*law);
+  }
   out["points_fitted"] = fit.points.size();
   out["points_left_out"] = fit.left_out;
   out["rms_residual_mps"] = fit.rms_residual_mps;

@@ -116,6 +116,9 @@ void runSimulate(const SimulateFlags& flags) {
             << " m/s\n";
   const nlohmann::json physics = engine::physicsJson(params, engine::cueStrikeParamsFor(scene));
   std::cout << "models: cushion " << physics["cushion"]["model"].get<std::string>()
+            << (physics["cushion"].contains("restitution_speed_dependence")
+                    ? " with speed-dependent restitution"
+                    : "")
             << ", ball-ball " << physics["ball_ball"]["model"].get<std::string>()
             << (physics["cue"].contains("squirt_end_mass_kg") ? ", squirt\n" : "\n");
   std::cout << "first ball hit: " << outcome.first_hit.value_or("none");

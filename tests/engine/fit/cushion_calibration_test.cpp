@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
 
+#include "engine/io/assets_directory.h"
+#include "engine/io/scene.h"
 #include "engine/io/table.h"
 #include "physics/cushion_exact_solver.h"
 
@@ -33,6 +36,13 @@ CushionMeasurement synthetic(const physics::CushionParams& p, double speed, doub
   m.rebound_angle_deg =
       std::atan2(-result.after.v.y(), result.after.v.x()) * 180 / kPi + noise_deg * gauss(random);
   return m;
+}
+
+// The rebound speed of a ball rolling head-on into the cushion at `speed_mps`.
+double rebound(const physics::CushionParams& p, double speed_mps) {
+  const auto result = physics::solveCushionImpactExact(
+      p, physics::incomingBall(speed_mps, kPi / 2, speed_mps / p.radius_m, 0));
+  return std::hypot(result.after.v.x(), result.after.v.y());
 }
 
 physics::CushionParams poolCushion(double e, double mu_w) {
@@ -224,6 +234,129 @@ TEST(CushionCalibration, EnglishTurnsThePoolReboundTheWayPlayersKnow) {
   EXPECT_LT(running, none - 3);
   EXPECT_GT(reverse, none + 1);
   EXPECT_LT(none, 45);  // a rolling ball comes off flatter than it came in
+}
+
+physics::CushionParams snookerCushion() {
+  return calibrationStart(builtinTable("snooker-12ft"), builtinBallSet("snooker"));
+}
+
+// Head-on rolling impacts from 0.3 to 3.5 m/s, as the paper measured them, made by `truth`.
+std::vector<CushionMeasurement> headOnRolling(const physics::CushionParams& truth, double noise_mps,
+                                              uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::vector<CushionMeasurement> data;
+  for (double speed = 0.3; speed < 3.55; speed += 0.2) {
+    data.push_back(synthetic(truth, speed, 90, 1, 0, random, noise_mps, 0));
+    data.back().rebound_angle_deg.reset();
+  }
+  return data;
+}
+
+CushionCalibrationSetup speedDependenceSetup(std::vector<CushionFitParameter> fitted) {
+  CushionCalibrationSetup setup;
+  setup.start = snookerCushion();
+  setup.fitted = std::move(fitted);
+  setup.max_speed_mps = std::numeric_limits<double>::infinity();  // the fast points are the point
+  setup.threads = 2;
+  return setup;
+}
+
+// Data made with a known knee and exponent (and e_e) plus noise are fitted back within 3 sd, from
+// the fit's own start (kSpeedDependenceFitStart, e_e the table's).
+TEST(CushionCalibration, FitsASyntheticSpeedDependenceBackWithinItsUncertainty) {
+  physics::CushionParams truth = snookerCushion();
+  truth.restitution = 0.95;
+  truth.restitution_speed_dependence = physics::RestitutionSpeedDependence{1.8, 0.4};
+  for (uint64_t seed : {1u, 2u, 3u}) {
+    const CushionCalibrationSetup setup = speedDependenceSetup(
+        {CushionFitParameter::Restitution, CushionFitParameter::KneeSpeed,
+         CushionFitParameter::FalloffExponent});
+    const CushionCalibration fit = calibrateCushion(headOnRolling(truth, 0.01, seed), setup);
+    ASSERT_EQ(fit.values.size(), 3);
+    EXPECT_EQ(fit.left_out, 0);
+    const double expected[] = {0.95, 1.8, 0.4};
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_GT(fit.standard_deviation[i], 0) << i;
+      EXPECT_LT(std::abs(fit.values[i] - expected[i]), 3 * fit.standard_deviation[i])
+          << "parameter " << i << " seed " << seed << ": " << fit.values[i] << " +- "
+          << fit.standard_deviation[i];
+    }
+    ASSERT_TRUE(fit.params.restitution_speed_dependence);
+    EXPECT_EQ(fit.params.restitution_speed_dependence->knee_speed_mps, fit.values[1]);
+  }
+}
+
+// The law shipped for the snooker cushion: a scene's "physics" value
+// (assets/measurements/snooker-speed-dependence.json), read as a scene reads it.
+physics::RestitutionSpeedDependence shippedSnookerLaw() {
+  nlohmann::json scene = {{"table", "snooker-12ft"},
+                          {"ball_set", "snooker"},
+                          {"balls", {{"cue", {0.0, 0.0}}}},
+                          {"shot", {{"heading_deg", 0}, {"speed_mps", 1}}}};
+  const std::string file = assetsDirectory() + "/measurements/snooker-speed-dependence.json";
+  scene["physics"] = JsonReader::parseFile(file);
+  const nlohmann::json law = simulationParamsFor(sceneFromJson(scene, file))
+                                 .cushion->parametersJson()
+                                 .at("restitution_speed_dependence");
+  return {law.at("knee_speed_mps").get<double>(), law.at("falloff_exponent").get<double>()};
+}
+
+CushionCalibration fitOfTheFullSnookerData() {
+  const auto data = readCushionMeasurements(assetsDirectory() +
+                                            "/measurements/snooker-head-on-rolling.csv");
+  return calibrateCushion(data, speedDependenceSetup({CushionFitParameter::KneeSpeed,
+                                                      CushionFitParameter::FalloffExponent}));
+}
+
+// The paper's head-on snooker rebounds, all sixteen, with e_e and mu_w held at the table's (the
+// paper's) values: the fitted knee and exponent are those shipped for it, to their
+// rounding, and they follow the data far better than a constant e_e does.
+TEST(CushionCalibration, TheFullSnookerDataGiveTheShippedSpeedDependence) {
+  const CushionCalibration fit = fitOfTheFullSnookerData();
+  EXPECT_EQ(fit.points.size(), 16u);
+  const physics::RestitutionSpeedDependence shipped = shippedSnookerLaw();
+  EXPECT_NEAR(shipped.knee_speed_mps, fit.values[0], 0.005);  // shipped to 2 decimals
+  EXPECT_NEAR(shipped.falloff_exponent, fit.values[1], 0.005);
+  EXPECT_LT(fit.standard_deviation[0], 0.5);  // the data do fix them
+  EXPECT_LT(fit.standard_deviation[1], 0.15);
+  double constant_squares = 0;
+  for (const CalibratedPoint& p : fit.points) {
+    const double constant = rebound(snookerCushion(), p.measured.speed_mps);
+    constant_squares += std::pow(constant - p.measured.rebound_speed_mps, 2);
+  }
+  EXPECT_LT(fit.rms_residual_mps, 0.5 * std::sqrt(constant_squares / 16));
+}
+
+// With the shipped law on, a ball rolling head-on into the snooker cushion comes back at a ratio
+// that falls with speed above the knee while the rebound speed still grows (it levels off), and
+// the paper's points above the knee lie within 2.5 rms residuals of the fit; with e_e constant the
+// fastest lie far outside.
+TEST(CushionCalibration, TheShippedLawLevelsOffAHeadOnRollingRebound) {
+  physics::CushionParams with_law = snookerCushion();
+  with_law.restitution_speed_dependence = shippedSnookerLaw();
+  const double knee = with_law.restitution_speed_dependence->knee_speed_mps;
+  double previous_ratio = 1, previous_rebound = 0;
+  for (double speed : {knee, knee + 0.5, knee + 1, 5.0, 8.0, 12.0}) {
+    const double speed_out = rebound(with_law, speed);
+    EXPECT_LT(speed_out / speed, previous_ratio) << speed;
+    EXPECT_GT(speed_out, previous_rebound) << speed;
+    previous_ratio = speed_out / speed;
+    previous_rebound = speed_out;
+  }
+  // Below the knee the law changes nothing.
+  EXPECT_EQ(rebound(with_law, 1.0), rebound(snookerCushion(), 1.0));
+  const CushionCalibration fit = fitOfTheFullSnookerData();
+  int fast = 0;
+  for (const CushionMeasurement& m : readCushionMeasurements(
+           assetsDirectory() + "/measurements/snooker-head-on-rolling.csv")) {
+    if (m.speed_mps <= knee) continue;
+    ++fast;
+    EXPECT_LT(std::abs(rebound(with_law, m.speed_mps) - m.rebound_speed_mps),
+              2.5 * fit.rms_residual_mps)
+        << m.speed_mps;
+  }
+  EXPECT_GE(fast, 5);
+  EXPECT_GT(rebound(snookerCushion(), 3.42) - 2.75, 5 * fit.rms_residual_mps);
 }
 
 TEST(CushionCalibration, ParameterNamesAreTheSceneKeys) {

@@ -629,6 +629,41 @@ TEST(ScenePhysics, PhysicsEchoReadsBackToTheSameParameters) {
   EXPECT_EQ(echo["cushion"]["model"], "paper");
 }
 
+// The speed-dependent restitution in a scene: a ball rolling head-on into the foot cushion above
+// the knee comes back slower than with e_e constant; a knee above the impact changes nothing, to
+// the bit; the default model with the law gives the exact model's answer (it cannot use its table
+// of rolling impacts, which scale with speed); the echo carries the law and reads back.
+TEST(ScenePhysics, SpeedDependentRestitutionSlowsOnlyReboundsAboveTheKnee) {
+  const auto law = [](double knee_mps) {
+    return nlohmann::json{{"knee_speed_mps", knee_mps}, {"falloff_exponent", 0.5}};
+  };
+  const auto hit = [](const nlohmann::json& cushion) {
+    const SceneRun run =
+        runScene(sceneFromJson(lonePoolBall(0.6, 4, {{"cushion", cushion}}), "test.json"));
+    return firstEventOf(run.result, EventKind::Cushion);
+  };
+  const Event plain = hit({{"model", "exact"}});
+  const Event fallen = hit({{"model", "exact"}, {"restitution_speed_dependence", law(1.0)}});
+  const Event above = hit({{"model", "exact"}, {"restitution_speed_dependence", law(100)}});
+  const Event tabulated = hit({{"restitution_speed_dependence", law(1.0)}});
+  ASSERT_GT(plain.before[0].velocity.x(), 1.0);  // above the knee
+  EXPECT_EQ(fallen.before[0].velocity, plain.before[0].velocity);
+  EXPECT_LT(-fallen.after[0].velocity.x(), -plain.after[0].velocity.x() - 0.1);
+  EXPECT_EQ(above.after[0].velocity, plain.after[0].velocity);
+  EXPECT_EQ(above.after[0].angular_velocity, plain.after[0].angular_velocity);
+  EXPECT_EQ(tabulated.after[0].velocity, fallen.after[0].velocity);
+  const Scene scene = sceneFromJson(
+      lonePoolBall(0.6, 4, {{"cushion", {{"restitution_speed_dependence", law(1.5)}}}}), "t.json");
+  const nlohmann::json echo = physicsJson(simulationParamsFor(scene), cueStrikeParamsFor(scene));
+  EXPECT_EQ(echo["cushion"]["restitution_speed_dependence"], law(1.5));
+  const Scene again = sceneFromJson(lonePoolBall(0.6, 4, echo), "t.json");
+  EXPECT_EQ(physicsJson(simulationParamsFor(again), cueStrikeParamsFor(again)), echo);
+  // Without the key the echo has none: off by default.
+  const Scene plain_scene = sceneFromJson(lonePoolBall(0.6, 4), "t.json");
+  EXPECT_FALSE(physicsJson(simulationParamsFor(plain_scene), cueStrikeParamsFor(plain_scene))
+                   ["cushion"].contains("restitution_speed_dependence"));
+}
+
 // Every bad key is refused naming the file, the key path and the value (and what is allowed).
 TEST(ScenePhysics, BadOverridesAreRefusedNamingFileKeyAndValue) {
   struct Case {
@@ -663,6 +698,17 @@ TEST(ScenePhysics, BadOverridesAreRefusedNamingFileKeyAndValue) {
        {"test.json: physics.cushion: ", "e_e = 0", "[1e-06, 1]"}},
       {{{"cushion", {{"contact_height_m", 0.01}}}},
        {"test.json: physics.cushion: ", "h (m) = 0.01", "it must lie above R = 0.028575"}},
+      {{{"cushion", {{"restitution_speed_dependence", {{"knee_speed_mps", -1}, {"falloff_exponent", 0.3}}}}}},
+       {"test.json: physics.cushion: ", "restitution_speed_dependence.knee_speed_mps = -1",
+        "(0, 1000] m/s"}},
+      {{{"cushion", {{"restitution_speed_dependence", {{"knee_speed_mps", 2}, {"falloff_exponent", 2}}}}}},
+       {"test.json: physics.cushion: ", "restitution_speed_dependence.falloff_exponent = 2", "[0, 1]"}},
+      {{{"cushion", {{"restitution_speed_dependence", {{"knee_speed_mps", 2}}}}}},
+       {"test.json: physics.cushion.restitution_speed_dependence", "falloff_exponent"}},
+      {{{"cushion", {{"restitution_speed_dependence", 2}}}},
+       {"test.json: physics.cushion.restitution_speed_dependence = 2", "JSON object"}},
+      {{{"cushion", {{"model", "simple"}, {"restitution_speed_dependence", {{"knee_speed_mps", 2}, {"falloff_exponent", 0.3}}}}}},
+       {"test.json: physics.cushion.restitution_speed_dependence", "simple_restitution"}},
       {{{"cushion", {{"tolerance", 0.5}}}},
        {"test.json: physics.cushion: ", "exact solver tolerance = 0.5", "[1e-14, 1e-06]"}},
       {{{"ball_ball", {{"model", "newton"}}}},

@@ -521,6 +521,13 @@ TEST_F(BadTableFileTest, CushionDefaultsAreReadAndChecked) {
   EXPECT_MENTIONS(loadError(), "cushion.friction = -0.1");
   document["cushion"] = {{"restitution", 0.8}};
   EXPECT_MENTIONS(loadError(), "cushion.friction is missing");
+  // The model's range: the rigid model's stated 2.5 m/s unless the file gives its own.
+  EXPECT_EQ(table.cushion_valid_normal_speed_mps, kRigidCushionValidNormalSpeedMps);
+  document["cushion"] = {{"restitution", 0.8}, {"friction", 0.2}, {"valid_normal_speed_mps", 1.8}};
+  std::ofstream(path) << document.dump(2);
+  EXPECT_EQ(loadTable(path).cushion_valid_normal_speed_mps, 1.8);
+  document["cushion"]["valid_normal_speed_mps"] = 0;
+  EXPECT_MENTIONS(loadError(), "cushion.valid_normal_speed_mps = 0");
 }
 
 TEST_F(BadTableFileTest, ZeroJawRadiusIsRejected) {

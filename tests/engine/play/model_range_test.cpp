@@ -76,6 +76,20 @@ TEST(ModelRange, ASoftShotReportsNone) {
   EXPECT_TRUE(shotResult(scene, run, false).beyond_model_range.empty());
 }
 
+// A table file may carry its own limit (its cushion.valid_normal_speed_mps); a scene's still wins.
+TEST(ModelRange, ATableMayCarryItsOwnLimit) {
+  nlohmann::json document = sceneDocument("heavy-sidespin");
+  nlohmann::json table = JsonReader::parseFile(assetsDirectory() + "/tables/" +
+                                               document["table"].get<std::string>() + ".json");
+  table["cushion"]["valid_normal_speed_mps"] = 0.05;
+  document["table"] = table;
+  const Scene low = sceneFromJson(document, "low.json");
+  EXPECT_EQ(validNormalSpeedFor(low), 0.05);
+  EXPECT_FALSE(impactsBeyondModelRange(low, runScene(low)).empty());
+  document["physics"]["cushion"]["valid_normal_speed_mps"] = 3.0;
+  EXPECT_EQ(validNormalSpeedFor(sceneFromJson(document, "high.json")), 3.0);
+}
+
 TEST(ModelRange, TheLimitChangesTheCountAndNotTheShot) {
   const Scene plain = loadScene(assetsDirectory() + "/scenes/heavy-sidespin.json");
   const Scene low = withLimit("heavy-sidespin", 0.05);
