@@ -24,6 +24,20 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // by one, their reallocations were about a tenth of a random shot's allocations).
 constexpr std::size_t kEventsReserved = 16;
 
+// When c0 + c1 t + c2 t^2 (c0 > 0 when apart) first reaches 0, roughly (infinity if never): only
+// the order in which cushions are solved, never a result.
+double roughClosingTime(const PolynomialCoefficients& gap) {
+  const double c0 = gap[0], c1 = gap[1], c2 = gap[2];
+  if (!(c0 > 0)) return 0;
+  if (c2 == 0) return c1 < 0 ? -c0 / c1 : kInfinity;
+  const double discriminant = c1 * c1 - 4 * c2 * c0;
+  if (discriminant < 0) return kInfinity;
+  const double root = std::sqrt(discriminant);
+  const double early = (-c1 - root) / (2 * c2), late = (-c1 + root) / (2 * c2);
+  const double first = std::min(early, late), second = std::max(early, late);
+  return first >= 0 ? first : (second >= 0 ? second : kInfinity);
+}
+
 bool moving(const physics::ClothParams& cloth, const BallState& ball) {
   const physics::MotionState state = physics::motionState(cloth, ball);
   return state == physics::MotionState::Sliding || state == physics::MotionState::Rolling;
@@ -47,6 +61,7 @@ ShotSimulation::ShotSimulation(const SimulationParams& params, const TableGeomet
   }
   startBalls(balls);
   cushion_boxes_.reserve(table.cushions.size());
+  cushion_gaps_.reserve(table.cushions.size());
   jaw_boxes_.reserve(table.jaws.size());
   pocket_boxes_.reserve(table.pockets.size());
   for (const CushionSegment& c : table.cushions)
@@ -413,9 +428,13 @@ void ShotSimulation::predictOwn(int i) {
   own_[i] = absolute(best_own);
 }
 
+// The cushions whose box the ball's reaches are solved nearest first (by a rough estimate of when
+// the gap closes): a cushion whose gap stays open until the best event found so far cannot be the
+// ball's first and is skipped unsolved. Only the order of the work changes, not what is found.
 void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* best_own) {
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
+  cushion_gaps_.clear();
   for (int k = 0; k < static_cast<int>(table_.cushions.size()); ++k) {
     if (!b.box.overlaps(cushion_boxes_[k])) {
       ++result_.skipped_predictions;
@@ -425,11 +444,24 @@ void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* bes
     const PolynomialCoefficients gap = {c.inward_normal.dot(path.constant_m - c.start_m) - R_,
                                         c.inward_normal.dot(path.linear_mps),
                                         c.inward_normal.dot(path.quadratic_mps2), 0, 0};
-    const physics::RootSearchResult hit = solveGap(gap, *horizon);
+    cushion_gaps_.push_back({roughClosingTime(gap), k, gap});
+  }
+  std::sort(cushion_gaps_.begin(), cushion_gaps_.end(),
+            [](const CushionGap& a, const CushionGap& b) {
+              return a.rough_time_s < b.rough_time_s ||
+                     (a.rough_time_s == b.rough_time_s && a.cushion < b.cushion);
+            });
+  for (const CushionGap& g : cushion_gaps_) {
+    if (quadraticStaysAbove(g.gap, best_own->dt_s)) {
+      ++result_.skipped_predictions;
+      continue;
+    }
+    const physics::RootSearchResult hit = solveGap(g.gap, *horizon);
     if (hit.outcome != physics::RootOutcome::Root) continue;
+    const CushionSegment& c = table_.cushions[g.cushion];
     const Eigen::Vector2d along = c.end_m - c.start_m;
     const double s = (path.at(hit.time) - c.start_m).dot(along) / along.squaredNorm();
-    const PredictedEvent candidate{hit.time, EventKind::Cushion, i, -1, k};
+    const PredictedEvent candidate{hit.time, EventKind::Cushion, i, -1, g.cushion};
     if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < *best_own)
       *best_own = candidate;
   }
@@ -447,7 +479,7 @@ void ShotSimulation::predictJaws(int i, double* horizon, PredictedEvent* best_ow
     }
     const JawArc& jaw = table_.jaws[k];
     if (staysFarther(path.constant_m - jaw.centre_m, path.linear_mps, path.quadratic_mps2,
-                     jaw.radius_m + R_, *horizon)) {
+                     jaw.radius_m + R_, best_own->dt_s)) {  // not before the best so far
       ++result_.skipped_predictions;
       continue;
     }
@@ -474,7 +506,7 @@ void ShotSimulation::predictPockets(int i, double* horizon, PredictedEvent* best
     }
     const Circle& pocket = table_.pockets[k];
     if (staysFarther(path.constant_m - pocket.centre_m, path.linear_mps, path.quadratic_mps2,
-                     pocket.radius_m, *horizon)) {
+                     pocket.radius_m, best_own->dt_s)) {  // not before the best so far
       ++result_.skipped_predictions;
       continue;
     }

@@ -173,6 +173,14 @@ class ShotSimulation {
   // own, and their pairs with the moving balls are predicted by those); only counted.
   std::vector<char> starts_at_rest_;
   long resting_from_start_ = 0;
+  // predictCushions()' scratch (kept to allocate nothing per event): the cushions a ball's box
+  // reaches, their gaps, and when each roughly closes.
+  struct CushionGap {
+    double rough_time_s;
+    int cushion;
+    physics::PolynomialCoefficients gap;
+  };
+  std::vector<CushionGap> cushion_gaps_;
   // Impacts solved ahead on the caller's worker, if one was handed over.
   CushionSolveAhead ahead_;
   bool solve_ahead_ = false;
