@@ -38,11 +38,6 @@ double roughClosingTime(const PolynomialCoefficients& gap) {
   return first >= 0 ? first : (second >= 0 ? second : kInfinity);
 }
 
-bool moving(const physics::ClothParams& cloth, const BallState& ball) {
-  const physics::MotionState state = physics::motionState(cloth, ball);
-  return state == physics::MotionState::Sliding || state == physics::MotionState::Rolling;
-}
-
 }  // namespace
 
 ShotSimulation::ShotSimulation(const SimulationParams& params, const TableGeometry& table,
@@ -125,10 +120,19 @@ void ShotSimulation::startBalls(const std::vector<BallState>& input) {
 void ShotSimulation::settle(int i, double time_s) {
   Track& b = balls_[i];
   b.reference_time_s = time_s;
-  b.change_dt_s = physics::timeToStateChange(params_.cloth, b.state);
-  b.path = physics::positionQuadratic(params_.cloth, b.state);
-  b.moves = moving(params_.cloth, b.state);
+  const physics::CurrentMotion motion = physics::currentMotion(params_.cloth, b.state);
+  b.motion = motion.state;
+  b.change_dt_s = motion.duration_s;
+  b.path = motion.path;
+  b.moves = motion.state == physics::MotionState::Sliding ||
+            motion.state == physics::MotionState::Rolling;
   b.box = b.moves ? sweptBox(b.path, b.change_dt_s, R_) : Box::around(b.state.position, R_);
+}
+
+// Ball b's settled state dt_s after its reference time (its motion, found by settle(), is not
+// checked again).
+BallState ShotSimulation::advanceTrack(const Track& b, double dt_s) const {
+  return physics::advanceWithinKnownState(params_.cloth, b.state, b.motion, b.change_dt_s, dt_s);
 }
 
 // The path of ball i from time t on (a shift of its quadratic).
@@ -403,7 +407,7 @@ void ShotSimulation::solveAhead(int i) {
   const Track& b = balls_[i];
   BallState at = b.state;
   const double dt = std::min(c.dt_s - b.reference_time_s, b.change_dt_s);
-  if (dt > 0) at = physics::advanceWithinState(params_.cloth, at, dt);
+  if (dt > 0) at = advanceTrack(b, dt);
   const physics::BallVelocity local =
       ContactFrame(contactNormal(table_, c.kind, c.index, at.position)).toLocal(at);
   if (local.v.y() > 0)
@@ -618,7 +622,7 @@ void ShotSimulation::moveToEvent(int i) {
   const double dt = next_.kind == EventKind::StateChange
                         ? b.change_dt_s
                         : std::min(next_time_s_ - b.reference_time_s, b.change_dt_s);
-  if (dt > 0) b.state = physics::advanceWithinState(params_.cloth, b.state, dt);
+  if (dt > 0) b.state = advanceTrack(b, dt);
 }
 
 // The chosen cushion model (engine/sim/cushion_contact_model.h) in the frame of the contact normal,

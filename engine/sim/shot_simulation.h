@@ -73,6 +73,7 @@ class ShotSimulation {
     physics::BallState state;
     double reference_time_s = 0;
     double change_dt_s = kNever;      // from the reference time to its next state change
+    physics::MotionState motion = physics::MotionState::Stationary;  // its state until then
     physics::PositionQuadratic path;  // from the reference time
     bool moves = false;               // sliding or rolling: its centre moves
     bool pocketed = false;
@@ -87,6 +88,7 @@ class ShotSimulation {
   void startBalls(const std::vector<physics::BallState>& input);
   void settle(int i, double time_s);
   physics::PositionQuadratic pathFrom(int i, double t) const;
+  physics::BallState advanceTrack(const Track& b, double dt_s) const;
 
   // Predicting (one pass after each event, over the balls it changed).
   void prepareNext();
