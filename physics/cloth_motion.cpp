@@ -216,16 +216,26 @@ PositionQuadratic positionQuadratic(const ClothParams& params, const BallState& 
   return quadraticOf(params, ball, classify(params, ball));
 }
 
+CurrentMotion currentMotion(const ClothParams& params, const BallState& ball) {
+  validateInputs(params, ball);
+  const MotionState state = classify(params, ball);
+  return {state, durationOf(params, ball, state), quadraticOf(params, ball, state)};
+}
+
+BallState advanceWithinKnownState(const ClothParams& params, const BallState& ball,
+                                  MotionState state, double duration_s, double dt_s) {
+  if (!(dt_s >= 0 && dt_s <= duration_s && std::isfinite(dt_s))) {
+    rejectValue("time step dt (s)", dt_s,
+                std::string("it must lie in [0, ") + valueText(duration_s) +
+                    "], the time the ball stays " + motionStateName(state));
+  }
+  return withinState(params, ball, state, duration_s, dt_s);
+}
+
 BallState advanceWithinState(const ClothParams& params, const BallState& ball, double dt_s) {
   validateInputs(params, ball);
   const MotionState state = classify(params, ball);
-  const double duration = durationOf(params, ball, state);
-  if (!(dt_s >= 0 && dt_s <= duration && std::isfinite(dt_s))) {
-    rejectValue("time step dt (s)", dt_s,
-                std::string("it must lie in [0, ") + valueText(duration) +
-                    "], the time the ball stays " + motionStateName(state));
-  }
-  return withinState(params, ball, state, duration, dt_s);
+  return advanceWithinKnownState(params, ball, state, durationOf(params, ball, state), dt_s);
 }
 
 BallState advance(const ClothParams& params, const BallState& ball, double dt_s) {

@@ -110,6 +110,20 @@ struct PositionQuadratic {
 
 PositionQuadratic positionQuadratic(const ClothParams& params, const BallState& ball);
 
+// A ball's motion until its state changes, from one check of the parameters and the ball: what
+// motionState, timeToStateChange and positionQuadratic give, for a caller that needs all three.
+struct CurrentMotion {
+  MotionState state = MotionState::Stationary;
+  double duration_s = 0;  // timeToStateChange
+  PositionQuadratic path;
+};
+CurrentMotion currentMotion(const ClothParams& params, const BallState& ball);
+
+// advanceWithinState for a ball whose motion state and its duration the caller has from
+// currentMotion() on this ball (they are used as given: the ball is not checked again).
+BallState advanceWithinKnownState(const ClothParams& params, const BallState& ball,
+                                  MotionState state, double duration_s, double dt_s);
+
 // The state dt_s later, for 0 <= dt_s <= timeToStateChange (closed form). At dt_s equal to that
 // time the next state is set exactly: rolling after sliding, v = 0 and w_xy = 0 after rolling,
 // w_z = 0 after spinning. A spinning or stationary ball has v and w_xy set to exactly 0.

@@ -1,8 +1,61 @@
 #include "engine/sim/broad_phase.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
 
 namespace baize::engine {
+namespace {
+
+// The Bernstein coefficients must exceed this many unit roundoffs of sum |c_k| T^k: their own
+// rounding (a few operations per coefficient, a few more per halving) and the root finder's band
+// (kPolynomialErrorUnitRoundoffs of the same sum, plus its evaluation's rounding) both lie well
+// below it, so the root finder, run instead, would find no root either.
+constexpr double kBernsteinMarginRoundoffs = 64;
+// Pieces halved at most this deep (2^3 = 8 pieces at most): balls that pass closer than that
+// resolves are left to the root finder.
+constexpr int kBernsteinMaxHalvings = 3;
+
+using Bernstein = std::array<double, 5>;
+
+bool allAbove(const Bernstein& b, double margin) {
+  return std::all_of(b.begin(), b.end(), [margin](double x) { return x > margin; });
+}
+
+// Whether the piece with Bernstein coefficients b stays above margin, halving it (de Casteljau) at
+// most `halvings` more times.
+bool pieceStaysAbove(const Bernstein& b, double margin, int halvings) {
+  if (!(b[0] > margin) || !(b[4] > margin)) return false;  // an end is not: no proof possible
+  if (allAbove(b, margin)) return true;
+  if (halvings == 0) return false;
+  Bernstein left, right, row = b;
+  for (int level = 0; level < 5; ++level) {
+    left[level] = row[0];
+    right[4 - level] = row[4 - level];
+    for (int k = 0; k < 4 - level; ++k) row[k] = 0.5 * (row[k] + row[k + 1]);
+  }
+  return pieceStaysAbove(left, margin, halvings - 1) &&
+         pieceStaysAbove(right, margin, halvings - 1);
+}
+
+}  // namespace
+
+bool bernsteinStaysPositive(const physics::PolynomialCoefficients& p, double horizon) {
+  // a_k = c_k T^k: p on [0, 1] in s = t / T.
+  std::array<double, 5> a;
+  double power = 1, magnitude = 0;
+  for (int k = 0; k < 5; ++k) {
+    a[k] = p[k] * power;
+    magnitude += std::abs(a[k]);
+    power *= horizon;
+  }
+  if (!std::isfinite(magnitude)) return false;
+  // b_i = sum_{k <= i} C(i, k) / C(4, k) a_k.
+  const Bernstein b = {a[0], a[0] + a[1] / 4, a[0] + a[1] / 2 + a[2] / 6,
+                       a[0] + 3 * a[1] / 4 + a[2] / 2 + a[3] / 4, a[0] + a[1] + a[2] + a[3] + a[4]};
+  return pieceStaysAbove(b, kBernsteinMarginRoundoffs * 0x1p-53 * magnitude,
+                         kBernsteinMaxHalvings);
+}
 
 RestingGrid::RestingGrid(const std::vector<int>& indices,
                          const std::vector<physics::BallState>& balls, double R) {

@@ -65,9 +65,15 @@ inline bool staysFarther(const Eigen::Vector2d& c, const Eigen::Vector2d& l,
   return lowest.value > distance + kBoxMargin_m;
 }
 
+// Whether quartic p stays positive on [0, horizon] (finite) by its Bernstein coefficients there:
+// p is a weighted mean of them on each piece, so all of them positive (by a margin that covers
+// their rounding and the root finder's own rounding band) proves it. Pieces are halved while a
+// coefficient is not, up to kBernsteinMaxHalvings times.
+bool bernsteinStaysPositive(const physics::PolynomialCoefficients& p, double horizon);
+
 // Whether gap polynomial p stays positive on [0, horizon], so that the root finder need not run: a
 // quadratic (a straight cushion) by its lowest value there, exactly; a quartic by the bound
-// p(t) >= c0 - sum |c_k| T^k.
+// p(t) >= c0 - sum |c_k| T^k, then by its Bernstein coefficients.
 inline bool staysApart(const physics::PolynomialCoefficients& p, double horizon) {
   if (!(p[0] > 0) || !std::isfinite(horizon)) return false;
   if (p[3] == 0 && p[4] == 0) {
@@ -79,7 +85,14 @@ inline bool staysApart(const physics::PolynomialCoefficients& p, double horizon)
     power *= horizon;
     bound += std::abs(p[k]) * power;
   }
-  return p[0] - bound > 0;
+  return p[0] - bound > 0 || bernsteinStaysPositive(p, horizon);
+}
+
+// Whether c0 + c1 t + c2 t^2 (a straight cushion's gap, m) stays above kBoxMargin_m on [0, T]: then
+// its first root, if any, comes after T (the margin is far above the rounding of either).
+inline bool quadraticStaysAbove(const physics::PolynomialCoefficients& p, double T) {
+  if (!std::isfinite(T)) return false;
+  return quadraticLowestValue(p[0], p[1], p[2], T).value > kBoxMargin_m;
 }
 
 // An axis-aligned box in the table plane, m: the broad phase that keeps pairs and cushions that

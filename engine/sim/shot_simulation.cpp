@@ -24,9 +24,18 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // by one, their reallocations were about a tenth of a random shot's allocations).
 constexpr std::size_t kEventsReserved = 16;
 
-bool moving(const physics::ClothParams& cloth, const BallState& ball) {
-  const physics::MotionState state = physics::motionState(cloth, ball);
-  return state == physics::MotionState::Sliding || state == physics::MotionState::Rolling;
+// When c0 + c1 t + c2 t^2 (c0 > 0 when apart) first reaches 0, roughly (infinity if never): only
+// the order in which cushions are solved, never a result.
+double roughClosingTime(const PolynomialCoefficients& gap) {
+  const double c0 = gap[0], c1 = gap[1], c2 = gap[2];
+  if (!(c0 > 0)) return 0;
+  if (c2 == 0) return c1 < 0 ? -c0 / c1 : kInfinity;
+  const double discriminant = c1 * c1 - 4 * c2 * c0;
+  if (discriminant < 0) return kInfinity;
+  const double root = std::sqrt(discriminant);
+  const double early = (-c1 - root) / (2 * c2), late = (-c1 + root) / (2 * c2);
+  const double first = std::min(early, late), second = std::max(early, late);
+  return first >= 0 ? first : (second >= 0 ? second : kInfinity);
 }
 
 }  // namespace
@@ -47,6 +56,7 @@ ShotSimulation::ShotSimulation(const SimulationParams& params, const TableGeomet
   }
   startBalls(balls);
   cushion_boxes_.reserve(table.cushions.size());
+  cushion_gaps_.reserve(table.cushions.size());
   jaw_boxes_.reserve(table.jaws.size());
   pocket_boxes_.reserve(table.pockets.size());
   for (const CushionSegment& c : table.cushions)
@@ -110,10 +120,19 @@ void ShotSimulation::startBalls(const std::vector<BallState>& input) {
 void ShotSimulation::settle(int i, double time_s) {
   Track& b = balls_[i];
   b.reference_time_s = time_s;
-  b.change_dt_s = physics::timeToStateChange(params_.cloth, b.state);
-  b.path = physics::positionQuadratic(params_.cloth, b.state);
-  b.moves = moving(params_.cloth, b.state);
+  const physics::CurrentMotion motion = physics::currentMotion(params_.cloth, b.state);
+  b.motion = motion.state;
+  b.change_dt_s = motion.duration_s;
+  b.path = motion.path;
+  b.moves = motion.state == physics::MotionState::Sliding ||
+            motion.state == physics::MotionState::Rolling;
   b.box = b.moves ? sweptBox(b.path, b.change_dt_s, R_) : Box::around(b.state.position, R_);
+}
+
+// Ball b's settled state dt_s after its reference time (its motion, found by settle(), is not
+// checked again).
+BallState ShotSimulation::advanceTrack(const Track& b, double dt_s) const {
+  return physics::advanceWithinKnownState(params_.cloth, b.state, b.motion, b.change_dt_s, dt_s);
 }
 
 // The path of ball i from time t on (a shift of its quadratic).
@@ -388,7 +407,7 @@ void ShotSimulation::solveAhead(int i) {
   const Track& b = balls_[i];
   BallState at = b.state;
   const double dt = std::min(c.dt_s - b.reference_time_s, b.change_dt_s);
-  if (dt > 0) at = physics::advanceWithinState(params_.cloth, at, dt);
+  if (dt > 0) at = advanceTrack(b, dt);
   const physics::BallVelocity local =
       ContactFrame(contactNormal(table_, c.kind, c.index, at.position)).toLocal(at);
   if (local.v.y() > 0)
@@ -413,9 +432,13 @@ void ShotSimulation::predictOwn(int i) {
   own_[i] = absolute(best_own);
 }
 
+// The cushions whose box the ball's reaches are solved nearest first (by a rough estimate of when
+// the gap closes): a cushion whose gap stays open until the best event found so far cannot be the
+// ball's first and is skipped unsolved. Only the order of the work changes, not what is found.
 void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* best_own) {
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
+  cushion_gaps_.clear();
   for (int k = 0; k < static_cast<int>(table_.cushions.size()); ++k) {
     if (!b.box.overlaps(cushion_boxes_[k])) {
       ++result_.skipped_predictions;
@@ -425,11 +448,24 @@ void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* bes
     const PolynomialCoefficients gap = {c.inward_normal.dot(path.constant_m - c.start_m) - R_,
                                         c.inward_normal.dot(path.linear_mps),
                                         c.inward_normal.dot(path.quadratic_mps2), 0, 0};
-    const physics::RootSearchResult hit = solveGap(gap, *horizon);
+    cushion_gaps_.push_back({roughClosingTime(gap), k, gap});
+  }
+  std::sort(cushion_gaps_.begin(), cushion_gaps_.end(),
+            [](const CushionGap& a, const CushionGap& b) {
+              return a.rough_time_s < b.rough_time_s ||
+                     (a.rough_time_s == b.rough_time_s && a.cushion < b.cushion);
+            });
+  for (const CushionGap& g : cushion_gaps_) {
+    if (quadraticStaysAbove(g.gap, best_own->dt_s)) {
+      ++result_.skipped_predictions;
+      continue;
+    }
+    const physics::RootSearchResult hit = solveGap(g.gap, *horizon);
     if (hit.outcome != physics::RootOutcome::Root) continue;
+    const CushionSegment& c = table_.cushions[g.cushion];
     const Eigen::Vector2d along = c.end_m - c.start_m;
     const double s = (path.at(hit.time) - c.start_m).dot(along) / along.squaredNorm();
-    const PredictedEvent candidate{hit.time, EventKind::Cushion, i, -1, k};
+    const PredictedEvent candidate{hit.time, EventKind::Cushion, i, -1, g.cushion};
     if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < *best_own)
       *best_own = candidate;
   }
@@ -447,7 +483,7 @@ void ShotSimulation::predictJaws(int i, double* horizon, PredictedEvent* best_ow
     }
     const JawArc& jaw = table_.jaws[k];
     if (staysFarther(path.constant_m - jaw.centre_m, path.linear_mps, path.quadratic_mps2,
-                     jaw.radius_m + R_, *horizon)) {
+                     jaw.radius_m + R_, best_own->dt_s)) {  // not before the best so far
       ++result_.skipped_predictions;
       continue;
     }
@@ -474,7 +510,7 @@ void ShotSimulation::predictPockets(int i, double* horizon, PredictedEvent* best
     }
     const Circle& pocket = table_.pockets[k];
     if (staysFarther(path.constant_m - pocket.centre_m, path.linear_mps, path.quadratic_mps2,
-                     pocket.radius_m, *horizon)) {
+                     pocket.radius_m, best_own->dt_s)) {  // not before the best so far
       ++result_.skipped_predictions;
       continue;
     }
@@ -586,7 +622,7 @@ void ShotSimulation::moveToEvent(int i) {
   const double dt = next_.kind == EventKind::StateChange
                         ? b.change_dt_s
                         : std::min(next_time_s_ - b.reference_time_s, b.change_dt_s);
-  if (dt > 0) b.state = physics::advanceWithinState(params_.cloth, b.state, dt);
+  if (dt > 0) b.state = advanceTrack(b, dt);
 }
 
 // The chosen cushion model (engine/sim/cushion_contact_model.h) in the frame of the contact normal,

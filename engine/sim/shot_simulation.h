@@ -73,6 +73,7 @@ class ShotSimulation {
     physics::BallState state;
     double reference_time_s = 0;
     double change_dt_s = kNever;      // from the reference time to its next state change
+    physics::MotionState motion = physics::MotionState::Stationary;  // its state until then
     physics::PositionQuadratic path;  // from the reference time
     bool moves = false;               // sliding or rolling: its centre moves
     bool pocketed = false;
@@ -87,6 +88,7 @@ class ShotSimulation {
   void startBalls(const std::vector<physics::BallState>& input);
   void settle(int i, double time_s);
   physics::PositionQuadratic pathFrom(int i, double t) const;
+  physics::BallState advanceTrack(const Track& b, double dt_s) const;
 
   // Predicting (one pass after each event, over the balls it changed).
   void prepareNext();
@@ -173,6 +175,14 @@ class ShotSimulation {
   // own, and their pairs with the moving balls are predicted by those); only counted.
   std::vector<char> starts_at_rest_;
   long resting_from_start_ = 0;
+  // predictCushions()' scratch (kept to allocate nothing per event): the cushions a ball's box
+  // reaches, their gaps, and when each roughly closes.
+  struct CushionGap {
+    double rough_time_s;
+    int cushion;
+    physics::PolynomialCoefficients gap;
+  };
+  std::vector<CushionGap> cushion_gaps_;
   // Impacts solved ahead on the caller's worker, if one was handed over.
   CushionSolveAhead ahead_;
   bool solve_ahead_ = false;

@@ -292,6 +292,42 @@ TEST(ClothMotionTest, EnergyNeverGrowsAlongTheMotion) {
   }
 }
 
+// currentMotion() gives what the three checked functions give, and advancing within the state it
+// found gives advanceWithinState()'s result, bit for bit, through a whole motion.
+TEST(ClothMotionTest, CurrentMotionAndAdvanceWithinKnownStateMatchTheCheckedFunctions) {
+  std::mt19937_64 rng(23);
+  for (const ClothParams& params : bothCloths()) {
+    for (int trial = 0; trial < 50; ++trial) {
+      BallState state = randomBall(rng, params);
+      for (int change = 0; change < 4; ++change) {
+        const CurrentMotion motion = currentMotion(params, state);
+        EXPECT_EQ(motion.state, motionState(params, state));
+        EXPECT_EQ(motion.duration_s, timeToStateChange(params, state));
+        const PositionQuadratic path = positionQuadratic(params, state);
+        EXPECT_EQ(motion.path.linear_mps, path.linear_mps);
+        EXPECT_EQ(motion.path.quadratic_mps2, path.quadratic_mps2);
+        if (motion.state == MotionState::Stationary) break;
+        for (double part : {0.25, 1.0}) {
+          const double dt = part * motion.duration_s;
+          const BallState known =
+              advanceWithinKnownState(params, state, motion.state, motion.duration_s, dt);
+          const BallState checked = advanceWithinState(params, state, dt);
+          EXPECT_EQ(known.position, checked.position) << "trial " << trial;
+          EXPECT_EQ(known.velocity, checked.velocity) << "trial " << trial;
+          EXPECT_EQ(known.angular_velocity, checked.angular_velocity) << "trial " << trial;
+          if (part == 1.0) state = known;
+        }
+      }
+    }
+  }
+  // A step beyond the state's end is refused as advanceWithinState refuses it.
+  const BallState rolling = makeBall({0, 0}, {1, 0, 0}, rollingSpin(poolCloth(), {1, 0}, 0));
+  const CurrentMotion motion = currentMotion(poolCloth(), rolling);
+  EXPECT_THROW(advanceWithinKnownState(poolCloth(), rolling, motion.state, motion.duration_s,
+                                       2 * motion.duration_s),
+               std::invalid_argument);
+}
+
 TEST(ClothMotionTest, SlidingLosesEnergyAtMuSGTimesSlipSpeed) {
   // Friction at the contact does work at the rate -mu_s g |u| per unit mass, and |u| falls at
   // (7/2) mu_s g: E(t) = E0 - mu_s g (|u0| t - (7/4) mu_s g t^2) (without spin about z).

@@ -78,6 +78,26 @@ TEST(BroadPhase, TheBoundsNeverClaimAClosingGapStaysOpen) {
   EXPECT_GT(skipped, 100);  // and the bounds do skip work
 }
 
+// Balls that pass 5 mm wide of touching over a long horizon: the coefficient bound cannot show the
+// gap stays open, the Bernstein coefficients can; 1 mm closer than touching, neither claims it.
+TEST(BroadPhase, BernsteinCoefficientsShowAWidePassStaysOpen) {
+  physics::PositionQuadratic path;
+  path.constant_m = Vector2d(-1, 0.0625);
+  path.linear_mps = Vector2d(1, 0);
+  const double touching = 0.0575, horizon = 2;
+  const physics::PolynomialCoefficients wide =
+      squaredGap(path, Vector2d::Zero(), Vector2d::Zero(), Vector2d::Zero(), touching);
+  double loose = wide[0], power = 1;
+  for (int k = 1; k < 5; ++k) loose -= std::abs(wide[k]) * (power *= horizon);
+  EXPECT_LE(loose, 0) << "the premise: the coefficient bound fails here";
+  EXPECT_TRUE(bernsteinStaysPositive(wide, horizon));
+  EXPECT_TRUE(staysApart(wide, horizon));
+  const physics::PolynomialCoefficients overlapping =
+      squaredGap(path, Vector2d::Zero(), Vector2d::Zero(), Vector2d::Zero(), 0.0635);
+  EXPECT_FALSE(bernsteinStaysPositive(overlapping, horizon));
+  EXPECT_FALSE(staysApart(overlapping, horizon));
+}
+
 // The gap polynomial is |c + l t + q t^2 - centre|^2 - d^2, coefficient by coefficient.
 TEST(BroadPhase, TheSquaredGapIsTheDistancePolynomial) {
   Draw draw;
