@@ -155,7 +155,12 @@ bool HeldLaws::affineNewton(const Eigen::Vector2d& r0, const Eigen::Matrix2d& W,
 bool HeldLaws::creepDirectionAffine(int k, Laws laws, Eigen::Vector2d* result) const {
   Eigen::Vector2d r0;
   Eigen::Matrix2d W;
-  if (!affineSlipRate(k, laws, &r0, &W)) return false;
+  return affineSlipRate(k, laws, &r0, &W) && affineCreepDirection(r0, W, result);
+}
+
+// creepDirectionAffine's roots for the slip rate r(d) = r0 + W d.
+bool HeldLaws::affineCreepDirection(const Eigen::Vector2d& r0, const Eigen::Matrix2d& W,
+                                    Eigen::Vector2d* result) {
   const Eigen::Vector2d wx = W.col(0), wy = W.col(1);
   const double W00 = wx.x(), W10 = wx.y(), W01 = wy.x(), W11 = wy.y();
   const physics::PolynomialCoefficients quartic = {r0.y() + W10, -2 * r0.x() + 2 * (W11 - W00),
@@ -188,7 +193,17 @@ Eigen::Vector2d HeldLaws::creepDirectionSearch(int k, Laws laws) const {
     if (r0.norm() > 0) return r0.normalized();
   }
   Eigen::Vector2d solved = Eigen::Vector2d::Zero();  // set whenever a closed form applies
-  if (creepDirectionAffine(k, laws, &solved)) return solved;
+  Eigen::Vector2d r0;
+  Eigen::Matrix2d W;
+  const bool affine = affineSlipRate(k, laws, &r0, &W);
+  if (affine && affineCreepDirection(r0, W, &solved)) return solved;
+  // Affine, the growth d . r(d) changes by at most |r0| + 2 |W| per radian of d's turn (its
+  // derivative is d' . r0 + d' . (W + W^T) d): a bracket whose ends' growths lie that far below
+  // zero (plus rounding) holds no root the search would keep, and is not bisected. (A held nose
+  // whose cone holds it comes here once per stick; its bisections were half the search's cost.)
+  const double growth_slope = affine ? r0.norm() + 2 * W.norm() : 0;
+  const double growth_rounding =
+      kAffineCheckRelative * (r0.norm() + W.col(0).norm() + W.col(1).norm());
   auto rateAlong = [&](double phi) {
     laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
     return slipRate(k, frictionFor(laws));
@@ -197,11 +212,26 @@ Eigen::Vector2d HeldLaws::creepDirectionSearch(int k, Laws laws) const {
     return cross(Eigen::Vector2d(std::cos(phi), std::sin(phi)), rateAlong(phi));
   };
   const double spacing = 2 * M_PI / kDirectionSamples;
-  std::array<double, kDirectionSamples + 1> turns;
-  for (int i = 0; i <= kDirectionSamples; ++i) turns[i] = turn(i * spacing);
+  // The samples' directions, the same for every search (taken once: a sine and cosine each).
+  static const std::array<Eigen::Vector2d, kDirectionSamples + 1> sample_directions = [spacing] {
+    std::array<Eigen::Vector2d, kDirectionSamples + 1> directions;
+    for (int i = 0; i <= kDirectionSamples; ++i)
+      directions[i] = Eigen::Vector2d(std::cos(i * spacing), std::sin(i * spacing));
+    return directions;
+  }();
+  std::array<double, kDirectionSamples + 1> turns, growths;
+  for (int i = 0; i <= kDirectionSamples; ++i) {
+    laws.direction[k] = sample_directions[i];
+    const Eigen::Vector2d r = slipRate(k, frictionFor(laws));
+    turns[i] = cross(laws.direction[k], r);
+    growths[i] = laws.direction[k].dot(r);
+  }
   double best_growth = 0, best_phi = 0;
   for (int i = 0; i < kDirectionSamples; ++i) {
     if ((turns[i] <= 0) == (turns[i + 1] <= 0)) continue;
+    if (affine && 0.5 * (growths[i] + growths[i + 1] + growth_slope * spacing) < -growth_rounding) {
+      continue;
+    }
     double lo = i * spacing, hi = (i + 1) * spacing;
     const bool lo_negative = turns[i] <= 0;
     for (int it = 0; it < 60 && hi - lo > 4 * kEpsilon; ++it) {

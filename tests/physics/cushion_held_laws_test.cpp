@@ -81,20 +81,29 @@ TEST(CushionHeldLaws, HeldClothSticksInsideItsConeAndElseSlidesAlongPhiStar) {
   EXPECT_GT(stuck + sliding, 0);
 }
 
-TEST(CushionHeldLaws, PhiStarOfTheNoseIsTheSameByEveryMethod) {
-  // A slippery nose held while the cloth slides: the stick law needs a friction of about
-  // s c / (s^2 + 5/2) = 0.14 of the normal impulse, beyond its cone.
+// For balls at 2 m/s with backspin and sidespin meeting the snooker cushion with nose friction
+// mu_w at a few angles: check(impact, laws, angle_deg) with the nose held (its slip set aside)
+// while the cloth slides along its slip, at the impact's start.
+template <typename Check>
+void forHeldNoseUnderSlidingCloth(double mu_w, const Check& check) {
   CushionParams p = test::snookerCushion();
-  p.cushion_friction = 0.05;
+  p.cushion_friction = mu_w;
   for (double angle_deg : {20.0, 45.0, 80.0}) {
     const double a = angle_deg * 3.14159265358979323846 / 180;
     Held impact(p, incomingBall(2.0, a, -1.0 / p.radius_m, 2.0 / p.radius_m), kTolerance);
     impact.setContactMode(0, ContactMode::Stick);
-    auto u = impact.slips(State::Zero());
-    u[0].setZero();
+    const auto u = impact.slips(State::Zero());
     Laws laws;
     laws.stick = {true, false};
     laws.direction = {Eigen::Vector2d::UnitX(), u[1].normalized()};
+    check(impact, laws, angle_deg);
+  }
+}
+
+TEST(CushionHeldLaws, PhiStarOfTheNoseIsTheSameByEveryMethod) {
+  // A slippery nose held while the cloth slides: the stick law needs a friction of about
+  // s c / (s^2 + 5/2) = 0.14 of the normal impulse, beyond its cone.
+  forHeldNoseUnderSlidingCloth(0.05, [](Held& impact, const Laws& laws, double angle_deg) {
     ASSERT_LT(impact.coneMargin(0, impact.frictionFor(laws)), 0) << angle_deg;
     const Eigen::Vector2d searched = impact.creepDirectionSearch(0, laws);
     expectGrowsAlongItself(impact, 0, laws, searched);
@@ -103,7 +112,32 @@ TEST(CushionHeldLaws, PhiStarOfTheNoseIsTheSameByEveryMethod) {
         (searched + 0.05 * Eigen::Vector2d(-searched.y(), searched.x())).normalized();
     ASSERT_TRUE(impact.creepDirection(0, laws, guess, &newton)) << angle_deg;
     EXPECT_NEAR((newton - searched).norm(), 0, 1e-8) << angle_deg;
-  }
+  });
+}
+
+TEST(CushionHeldLaws, TheSearchForAHeldNoseItsConeHoldsFindsNoGrowingDirection) {
+  // A grippy nose held while the cloth slides: its cone holds it, so along no direction does its
+  // slip grow along itself, and the search ends on the rate's mean over opposite directions.
+  forHeldNoseUnderSlidingCloth(0.3, [](Held& impact, const Laws& laws, double angle_deg) {
+    ASSERT_GT(impact.coneMargin(0, impact.frictionFor(laws)), 0) << angle_deg;
+    Laws sliding = laws;
+    sliding.stick[0] = false;
+    auto rateAlong = [&](const Eigen::Vector2d& d) {
+      sliding.direction[0] = d;
+      return impact.slipRate(0, impact.frictionFor(sliding));
+    };
+    constexpr int kScan = 3600;  // no root of cross(d, r(d)) on a fine scan grows
+    for (int i = 0; i < kScan; ++i) {
+      const double phi = 2 * 3.14159265358979323846 * i / kScan;
+      const Eigen::Vector2d d(std::cos(phi), std::sin(phi));
+      if (std::abs(cross(d, rateAlong(d))) < 1e-3 * rateAlong(d).norm()) {
+        EXPECT_LE(rateAlong(d).dot(d), 0) << angle_deg << " deg, phi " << phi;
+      }
+    }
+    const Eigen::Vector2d mean =
+        (rateAlong(Eigen::Vector2d(1, 0)) + rateAlong(Eigen::Vector2d(-1, 0))).normalized();
+    EXPECT_NEAR((impact.creepDirectionSearch(0, laws) - mean).norm(), 0, 1e-12) << angle_deg;
+  });
 }
 
 TEST(CushionHeldLaws, LagCorrectionBlendsByTheShare) {
