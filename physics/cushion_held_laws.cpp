@@ -96,7 +96,10 @@ bool HeldLaws::creepDirection(int k, Laws laws, const Eigen::Vector2d& guess,
 
 // Contact k's slip rate as r(d) = r0 + W d in its sliding direction d, from the rates at d = 0,
 // x and y; false when it is not affine (the rate at -x misses r0 - W x by more than rounding).
+// The cloth's rate while the nose sticks is rational in d_y (the nose's stick friction sets the
+// cloth's normal force) and linear along x, where the check looks: it is refused outright.
 bool HeldLaws::affineSlipRate(int k, Laws laws, Eigen::Vector2d* r0, Eigen::Matrix2d* W) const {
+  if (k == 1 && laws.stick[0]) return false;
   laws.stick[k] = false;
   auto rateAlong = [&](const Eigen::Vector2d& d) {
     laws.direction[k] = d;
@@ -151,14 +154,7 @@ bool HeldLaws::affineNewton(const Eigen::Vector2d& r0, const Eigen::Matrix2d& W,
 // phi* in closed form when the slip rate is affine in the friction direction d, r(d) = r0 + W d
 // (the other contact slides or is frictionless; with it stuck its stick law makes r rational):
 // cross(d, r0 + W d) = 0 is then A cos + B sin + C cos 2phi + D sin 2phi + E = 0, a quartic in
-// t = tan(phi / 2). Returns false when r is not affine or no root has the slip growing.
-bool HeldLaws::creepDirectionAffine(int k, Laws laws, Eigen::Vector2d* result) const {
-  Eigen::Vector2d r0;
-  Eigen::Matrix2d W;
-  return affineSlipRate(k, laws, &r0, &W) && affineCreepDirection(r0, W, result);
-}
-
-// creepDirectionAffine's roots for the slip rate r(d) = r0 + W d.
+// t = tan(phi / 2). Returns false when no root has the slip growing.
 bool HeldLaws::affineCreepDirection(const Eigen::Vector2d& r0, const Eigen::Matrix2d& W,
                                     Eigen::Vector2d* result) {
   const Eigen::Vector2d wx = W.col(0), wy = W.col(1);
@@ -301,9 +297,8 @@ Eigen::Vector2d HeldLaws::probeTurned(const Eigen::Vector2d& phi) {
 // Growing linearly (|u| = g (P - P0)) the slip lags phi* turning steadily by |u| phi*' / (g +
 // kappa), exactly: the share kappa / (g + kappa). Growing from a zero rate (|u| = a (P - P0)^2, g
 // = 2 a (P - P0) now) the lag solves |u| (phi*' - lag') = kappa lag, whose series is |u| phi*' /
-// kappa (1 - g / kappa + ...); the share (kappa + g / 2) / (kappa + g) matches it to second order
-// (kappa / (g / 2 + kappa), first order only, ended the held law of a break's nose released from
-// its cone's edge at a slip 0.7 times as large, and cost that impact 8 % more evaluations).
+// kappa (1 - g / kappa + ...); the share (kappa + g / 2) / (kappa + g) matches it to second order,
+// so the held law follows the regrowing slip further before explicit steps must take over.
 double HeldLaws::lagShareOf(double growth, double restoring, double growth_order) {
   if (!(growth > 0) || !(restoring > 0)) return 1;
   if (growth_order == 2) return (restoring + 0.5 * growth) / (restoring + growth);

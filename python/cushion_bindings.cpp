@@ -51,7 +51,14 @@ physics::RestitutionSpeedDependence speedLawOf(const py::dict& given) {
       throw py::value_error(std::string(kName) + " has no " + key +
                             ": it needs both knee_speed_mps (m/s) and falloff_exponent");
     }
-    law.*field = py::cast<double>(given[key]);
+    const py::object value = given[key];
+    const bool number = (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) &&
+                        !py::isinstance<py::bool_>(value);
+    if (!number) {
+      throw py::type_error(std::string(kName) + "." + key + " = " +
+                           std::string(py::repr(value)) + " is not allowed: it must be a number");
+    }
+    law.*field = value.cast<double>();
   }
   physics::validateRestitutionSpeedDependence(law);  // ValueError naming the key and value
   return law;
@@ -119,8 +126,8 @@ void bindCushion(py::module_& module) {
              "One cushion impact by the model of Mathavan, Jackson & Parkin (2010), as `baize "
              "cushion`: speed V0 (m/s), angle from the cushion line (90: head-on), topspin and "
              "sidespin in units of V0/R (topspin 1: natural roll), the ball's mass (kg) and radius "
-             "(m), the nose height (m; default 7R/5), e_e, mu_w, mu_s, the optional speed dependence of e_e "
-             "(a dict with knee_speed_mps and falloff_exponent, as a scene's "
+             "(m), the nose height (m; default 7R/5), e_e, mu_w, mu_s, the optional speed "
+             "dependence of e_e (a dict with knee_speed_mps and falloff_exponent, as a scene's "
              "physics.cushion.restitution_speed_dependence), the solver ('exact' with "
              "its tolerance or 'paper' with its steps). Returns a dict: velocity and spin after "
              "(numpy 3-vectors in the cushion's frame, m/s and rad/s), rebound_speed (m/s), "

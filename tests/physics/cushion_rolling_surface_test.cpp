@@ -147,14 +147,17 @@ TEST(CushionRollingSurface, ThreadsAnsweringAtOnceGetTheAnswersOfOneThread) {
   int answered = 0;
   for (int t = 0; t < kThreads; ++t) {
     for (std::size_t i = 0; i < impacts.size(); ++i) {
-      ASSERT_EQ(answers[t][i].has_value(), expected[i].has_value()) << "thread " << t << " impact " << i;
+      ASSERT_EQ(answers[t][i].has_value(), expected[i].has_value())
+          << "thread " << t << " impact " << i;
       if (!expected[i]) continue;
       ++answered;
       EXPECT_EQ(answers[t][i]->v, expected[i]->v) << "thread " << t << " impact " << i;
       EXPECT_EQ(answers[t][i]->w, expected[i]->w) << "thread " << t << " impact " << i;
     }
   }
-  EXPECT_GT(answered, kThreads * 48);  // most of these rolling impacts lie in kept cells
+  // Most of these rolling impacts lie in kept cells (a few in cells left to the exact solver).
+  constexpr double kLeastShareAnswered = 0.75;
+  EXPECT_GT(answered, kLeastShareAnswered * kThreads * impacts.size());
   EXPECT_EQ(shared.stats().cells_built, alone.stats().cells_built);  // each cell built once
 }
 

@@ -191,6 +191,10 @@ def test_cushion_impact_takes_the_shipped_speed_dependence(prefix):
         baize.cushion_impact(restitution_speed_dependence={"falloff_exponent": 0.3})
     with pytest.raises(ValueError, match="'knee' is not allowed"):
         baize.cushion_impact(restitution_speed_dependence={"knee": 2, "falloff_exponent": 0.3})
+    for wrong in ("2", None, True):
+        with pytest.raises(TypeError, match=r"knee_speed_mps = .* is not allowed: it must be a number"):
+            baize.cushion_impact(restitution_speed_dependence={"knee_speed_mps": wrong,
+                                                               "falloff_exponent": 0.3})
 
 
 @pytest.mark.skipif(not baize.with_render, reason="built without rendering")

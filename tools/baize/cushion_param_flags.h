@@ -22,11 +22,13 @@ struct CushionParamFlags {
 void addCushionParamFlags(CLI::App* command, CushionParamFlags* flags);
 
 // Adds --knee-speed and --falloff-exponent, the optional speed dependence of e_e (as a scene's
-// physics.cushion.restitution_speed_dependence), for commands that solve impacts exactly.
+// physics.cushion.restitution_speed_dependence), for commands that solve one impact (the exact and
+// paper solvers honour it).
 void addRestitutionSpeedFlags(CLI::App* command, CushionParamFlags* flags);
 
 // The parameters the flags give (h = 7R/5 unless --h was given; the speed law when both its flags
-// were given, one alone refused; flags never added count as not given), checked: a value that is not finite or out of its range is refused with a UsageError
+// were given, one alone refused; flags never added count as not given), checked: a value that is
+// not finite or out of its range is refused with a UsageError
 // naming its flag.
 physics::CushionParams cushionParamsOf(const CushionParamFlags& flags);
 
