@@ -36,6 +36,12 @@ struct Exposed : Layer {
   using Layer::Layer;
   void setContactMode(int k, ContactMode mode) { this->contacts_[k].mode = mode; }
   void setCreepGuess(int k, const Eigen::Vector2d& guess) { this->contacts_[k].creep = guess; }
+  // Held since its slip grew from zero along `origin`, as the impulse (order 1) or its square (2).
+  void setCreepFromRest(int k, const Eigen::Vector2d& origin, double growth_order) {
+    this->contacts_[k].creep_from_rest = true;
+    this->contacts_[k].creep_origin = origin;
+    this->contacts_[k].creep_growth_order = growth_order;
+  }
   double vanishedSlip() const { return this->vanished_slip_; }
   double regularizingSlip() const { return this->regularizing_slip_; }
 };

@@ -62,6 +62,34 @@ TEST(CushionImpactRates, HeldClothRateIsTheGeneralLawsRate) {
   }
 }
 
+TEST(CushionImpactRates, HeldClothSlidingFromRestHasTheGeneralLawsLag) {
+  // A slippery cloth its cone cannot hold, its slip grown from zero along a direction phi* has
+  // turned away from: the written-out rate lags phi* as the general laws do, at either order.
+  CushionParams p = test::snookerCushion();
+  p.cloth_friction = 0.02;
+  int compared = 0;
+  for (double angle_deg : {15.0, 45.0, 75.0}) {
+    const double a = angle_deg * 3.14159265358979323846 / 180;
+    for (double growth_order : {1.0, 2.0}) {
+      Rates impact(p, incomingBall(1.5, a, 1.5 / p.radius_m, 0.5 / p.radius_m), kTolerance);
+      impact.setContactMode(1, ContactMode::Stick);
+      if (!impact.clothHeldWhileNoseSlides()) continue;
+      State z;
+      z << 0.005, 0.0005, -0.0002, 0.0001, 0.0001, 0.0005;
+      const State without_lag = impact.rate(z);
+      const Eigen::Vector2d turned_origin(std::cos(a), -std::sin(a));
+      impact.setCreepFromRest(1, turned_origin, growth_order);
+      // The lag is there: the cloth slides (its cone does not hold it) and lags.
+      constexpr double kVisibleLag = 1e-6;
+      EXPECT_GT(relativeDifference(impact.rate(z), without_lag), kVisibleLag) << angle_deg;
+      EXPECT_LE(relativeDifference(impact.rate(z), impact.generalRate(z)), kReassociationRelative)
+          << angle_deg << " deg, order " << growth_order;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 0);
+}
+
 TEST(CushionImpactRates, FrictionlessImpactIsIntegratedExactly) {
   CushionParams p = test::snookerCushion();
   p.cushion_friction = 0;
