@@ -189,8 +189,8 @@ Eigen::Vector2d HeldLaws::creepDirectionSearch(int k, Laws laws) const {
     if (r0.norm() > 0) return r0.normalized();
   }
   Eigen::Vector2d solved = Eigen::Vector2d::Zero();  // set whenever a closed form applies
-  Eigen::Vector2d r0;
-  Eigen::Matrix2d W;
+  Eigen::Vector2d r0 = Eigen::Vector2d::Zero();       // left so when the rate is not affine
+  Eigen::Matrix2d W = Eigen::Matrix2d::Zero();
   const bool affine = affineSlipRate(k, laws, &r0, &W);
   if (affine && affineCreepDirection(r0, W, &solved)) return solved;
   // Affine, the growth d . r(d) changes by at most |r0| + 2 |W| per radian of d's turn (its
@@ -199,7 +199,7 @@ Eigen::Vector2d HeldLaws::creepDirectionSearch(int k, Laws laws) const {
   // whose cone holds it comes here once per stick; its bisections were half the search's cost.)
   const double growth_slope = affine ? r0.norm() + 2 * W.norm() : 0;
   const double growth_rounding =
-      kAffineCheckRelative * (r0.norm() + W.col(0).norm() + W.col(1).norm());
+      affine ? kAffineCheckRelative * (r0.norm() + W.col(0).norm() + W.col(1).norm()) : 0;
   auto rateAlong = [&](double phi) {
     laws.direction[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
     return slipRate(k, frictionFor(laws));
