@@ -429,6 +429,17 @@ grep -qF "the spinning set, 30 impacts (seed 1;" "$work/spin_a.out" ||
 grep -qF "mu_w and mu_s drawn per impact" "$work/grippy.out" ||
   fail "the grippy bench does not say its frictions are drawn: $(head -2 "$work/grippy.out")"
 grep -qF "0 above the promised 1e-9 V0 (kept)" "$work/grippy.out" || fail "grippy: promise line"
+# Grippy contacts leave the table nothing: the default path solves each impact as the exact
+# solver does, at the same evaluations per impact.
+check_python '
+import re
+text = open(sys.argv[1]).read()
+exact = float(re.search(r"^exact default: ([0-9.]+) evaluations per impact", text, re.M).group(1))
+path = re.search(r"^tabulated default \(the default path\): 0 of 10 impacts answered from the "
+                 r"table, the rest solved exactly \(([0-9.e+]+) rate evaluations each\)", text, re.M)
+assert path, text
+close(float(path.group(1)), exact, 0.05 + 1e-3 * exact, "evaluations each, path vs exact")
+' "$work/grippy.out"
 check_python '
 import re
 # The worst impact is one of the set, drawn as documented: V0 in [0.1, 2.5] m/s, alpha in [1, 179]
