@@ -39,6 +39,8 @@ class HeldLaws : public ImpactEquations {
   static bool affineNewton(const Eigen::Vector2d& r0, const Eigen::Matrix2d& W,
                            const Eigen::Vector2d& guess, Eigen::Vector2d* result);
   bool creepDirectionAffine(int k, Laws laws, Eigen::Vector2d* result) const;
+  static bool affineCreepDirection(const Eigen::Vector2d& r0, const Eigen::Matrix2d& W,
+                                   Eigen::Vector2d* result);
   Eigen::Vector2d creepDirectionSearch(int k, Laws laws) const;
   bool clothHeldLaws(Laws* laws) const;
   // The lag of a slip growing from rest behind a turning phi*.

@@ -124,7 +124,7 @@ Extended ImpactRates::generalExtendedRate(const Extended& y) {
 // held in y: the laws of clothHeldLaws written out, so that the stages need neither the contact
 // matrix nor the general laws. The cloth sticks while its drive r0 lies inside its cone (|r0| <=
 // k, compared squared) and otherwise slides along r0, or, lag-corrected, along
-// (|r0| - k) / order x origin + r0, the direction of lagCorrected's blend. The general laws
+// lag x origin + r0, the direction of lagCorrected's blend by lagShareOf's share. The general laws
 // serve an exactly zero nose slip and a drive on the cone's edge.
 [[gnu::always_inline]] inline Extended ImpactRates::clothHeldRate(const Extended& y, double vy) {
   const SlidingSlip nose_slip = slidingSlip(y, 0);
@@ -147,7 +147,10 @@ Extended ImpactRates::generalExtendedRate(const Extended& y) {
     double dx = r0x, dy = r0y;
     const ContactState& cloth = contacts_[1];
     if (cloth.creep_from_rest) {
-      const double lag = (drive - own) / cloth.creep_growth_order;
+      // |r0| (1 - share) / share of lagShareOf (kappa = |r0|, g = |r0| - k).
+      const double growth = drive - own, half = 0.5 * growth;
+      const double lag = cloth.creep_growth_order == 2 ? drive * half / (drive + half)
+                                                       : growth / cloth.creep_growth_order;
       dx += lag * cloth.creep_origin.x();
       dy += lag * cloth.creep_origin.y();
     }

@@ -1,5 +1,6 @@
 #include "physics/cushion_rolling_surface.h"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -71,7 +72,8 @@ struct CushionRollingSurface::Cell {
   enum class State { Unbuilt, Kept, Split, Exact };
   double alpha0 = 0, alpha1 = 0, sigma0 = 0, sigma1 = 0;  // rad; V0/R
   int depth = 0;
-  State state = State::Unbuilt;
+  // Written once, by build, after what it publishes; read without a lock (acquire).
+  std::atomic<State> state{State::Unbuilt};
   // Per output, coefficients of T_i(x) T_j(y), x and y the cell's variables mapped to [-1, 1].
   // (empty until built; freed when split or marked)
   std::vector<std::array<double, kNodes * kNodes>> coefficients;
@@ -125,32 +127,39 @@ Outputs exactOutputs(const CushionParams& params, double alpha, double sigma) {
 
 }  // namespace
 
-CushionRollingSurface::CushionRollingSurface(const CushionParams& params)
-    : params_(params), roots_(kRootCellsAlpha * kRootCellsSidespin) {
+CushionRollingSurface::CushionRollingSurface(const CushionParams& params) : params_(params) {
   validateCushionParams(params);
   requireScalesWithSpeed(params);
+  // The grid of root cells, none built: a parameter set costs only the cells its impacts reach.
+  const double alpha_step = (kMaxAlpha_rad - kMinAlpha_rad) / kRootCellsAlpha;
+  const double sigma_step = kMaxSidespinRatio / kRootCellsSidespin;
+  for (int s = 0; s < kRootCellsSidespin; ++s) {
+    for (int a = 0; a < kRootCellsAlpha; ++a) {
+      auto root = std::make_unique<Cell>();
+      root->alpha0 = kMinAlpha_rad + a * alpha_step;
+      root->alpha1 = a + 1 == kRootCellsAlpha ? kMaxAlpha_rad : root->alpha0 + alpha_step;
+      root->sigma0 = s * sigma_step;
+      root->sigma1 = s + 1 == kRootCellsSidespin ? kMaxSidespinRatio : root->sigma0 + sigma_step;
+      roots_.push_back(std::move(root));
+    }
+  }
 }
 
 CushionRollingSurface::~CushionRollingSurface() = default;
 
-CushionRollingSurface::Cell& CushionRollingSurface::rootCellAt(double alpha, double sigma) {
+CushionRollingSurface::Cell& CushionRollingSurface::rootCellAt(double alpha, double sigma) const {
   const auto index = [](double value, double low, double high, int cells) {
     const int i = static_cast<int>((value - low) / (high - low) * cells);
     return std::min(std::max(i, 0), cells - 1);
   };
   const int a = index(alpha, kMinAlpha_rad, kMaxAlpha_rad, kRootCellsAlpha);
   const int s = index(sigma, 0, kMaxSidespinRatio, kRootCellsSidespin);
-  std::unique_ptr<Cell>& root = roots_[s * kRootCellsAlpha + a];
-  if (!root) {  // made when first touched: a parameter set costs only what its impacts reach
-    const double alpha_step = (kMaxAlpha_rad - kMinAlpha_rad) / kRootCellsAlpha;
-    const double sigma_step = kMaxSidespinRatio / kRootCellsSidespin;
-    root = std::make_unique<Cell>();
-    root->alpha0 = kMinAlpha_rad + a * alpha_step;
-    root->alpha1 = a + 1 == kRootCellsAlpha ? kMaxAlpha_rad : root->alpha0 + alpha_step;
-    root->sigma0 = s * sigma_step;
-    root->sigma1 = s + 1 == kRootCellsSidespin ? kMaxSidespinRatio : root->sigma0 + sigma_step;
-  }
-  return *root;
+  return *roots_[s * kRootCellsAlpha + a];
+}
+
+void CushionRollingSurface::buildOnce(Cell* cell) {
+  std::lock_guard<std::mutex> lock(build_mutex_);
+  if (cell->state.load(std::memory_order_relaxed) == Cell::State::Unbuilt) build(cell);
 }
 
 void CushionRollingSurface::build(Cell* cell) {
@@ -198,10 +207,9 @@ void CushionRollingSurface::build(Cell* cell) {
   stats_.exact_solves += kNodes * kNodes;
   ++stats_.cells_built;
   if (worst <= kCellCheckError) {
-    cell->state = Cell::State::Kept;
+    cell->state.store(Cell::State::Kept, std::memory_order_release);
     ++stats_.cells_kept;
   } else if (cell->depth < kMaxDepth) {
-    cell->state = Cell::State::Split;
     cell->coefficients = {};
     const double alpha_mid = 0.5 * (cell->alpha0 + cell->alpha1);
     const double sigma_mid = 0.5 * (cell->sigma0 + cell->sigma1);
@@ -214,9 +222,10 @@ void CushionRollingSurface::build(Cell* cell) {
       child->depth = cell->depth + 1;
       cell->children[c] = std::move(child);
     }
+    cell->state.store(Cell::State::Split, std::memory_order_release);  // children complete
   } else {
-    cell->state = Cell::State::Exact;
     cell->coefficients = {};
+    cell->state.store(Cell::State::Exact, std::memory_order_release);
     ++stats_.cells_to_exact;
   }
   stats_.build_seconds +=
@@ -236,18 +245,18 @@ std::optional<BallVelocity> CushionRollingSurface::answer(const BallVelocity& in
   const double sigma = params_.radius_m * sign * incoming.w.z() / speed;
   if (!(alpha >= kMinAlpha_rad && alpha <= kMaxAlpha_rad && sigma <= kMaxSidespinRatio))
     return std::nullopt;
-  Outputs out;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    Cell* cell = &rootCellAt(alpha, sigma);
-    for (;;) {
-      if (cell->state == Cell::State::Unbuilt) build(cell);
-      if (cell->state == Cell::State::Exact) return std::nullopt;
-      if (cell->state == Cell::State::Kept) break;
-      cell = cell->childAt(alpha, sigma);
+  Cell* cell = &rootCellAt(alpha, sigma);
+  for (;;) {
+    Cell::State state = cell->state.load(std::memory_order_acquire);
+    if (state == Cell::State::Unbuilt) {
+      buildOnce(cell);
+      state = cell->state.load(std::memory_order_acquire);
     }
-    out = cell->interpolate(alpha, sigma);
+    if (state == Cell::State::Exact) return std::nullopt;
+    if (state == Cell::State::Kept) break;
+    cell = cell->childAt(alpha, sigma);
   }
+  const Outputs out = cell->interpolate(alpha, sigma);
   const double spin_unit = speed / params_.radius_m;  // V0 / R
   BallVelocity after;
   after.v = Eigen::Vector3d(sign * speed * out[0], speed * out[1], 0);
@@ -257,7 +266,7 @@ std::optional<BallVelocity> CushionRollingSurface::answer(const BallVelocity& in
 }
 
 RollingSurfaceStats CushionRollingSurface::stats() const {
-  std::lock_guard<std::mutex> lock(mutex_);
+  std::lock_guard<std::mutex> lock(build_mutex_);
   return stats_;
 }
 

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -57,12 +58,18 @@ class CushionRollingSurface {
   struct Cell;
 
  private:
-  Cell& rootCellAt(double alpha_rad, double sidespin_ratio);
+  Cell& rootCellAt(double alpha_rad, double sidespin_ratio) const;
+  void buildOnce(Cell* cell);
   void build(Cell* cell);
 
   const CushionParams params_;
-  mutable std::mutex mutex_;  // guards the cells and the stats
+  // The root cells, made (not built) with the surface: the grid never changes, so it is read
+  // without a lock.
   std::vector<std::unique_ptr<Cell>> roots_;
+  // Guards building and the stats. A cell's state is published (release) only once its
+  // coefficients or children are complete, and never changes after that, so answers read the
+  // built cells without the lock: threads answering impacts at once do not wait on each other.
+  mutable std::mutex build_mutex_;
   RollingSurfaceStats stats_;
 };
 

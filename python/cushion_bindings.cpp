@@ -8,6 +8,7 @@
 
 #include "physics/cushion_exact_solver.h"
 #include "physics/cushion_paper_solver.h"
+#include "physics/cushion_restitution_speed.h"
 
 namespace baize::python {
 namespace {
@@ -30,10 +31,37 @@ void requireFinite(const char* name, double value) {
     throw py::value_error(std::string(name) + " = " + std::to_string(value) + " is not finite");
 }
 
+// The optional speed dependence of e_e, as a scene's physics.cushion.restitution_speed_dependence:
+// a mapping with exactly knee_speed_mps and falloff_exponent.
+physics::RestitutionSpeedDependence speedLawOf(const py::dict& given) {
+  constexpr const char* kName = "restitution_speed_dependence";
+  for (const auto& [key, value] : given) {
+    const std::string name = py::str(key);
+    if (name != "knee_speed_mps" && name != "falloff_exponent") {
+      throw py::value_error(std::string(kName) + " key '" + name +
+                            "' is not allowed: the keys are knee_speed_mps and falloff_exponent");
+    }
+  }
+  physics::RestitutionSpeedDependence law;
+  for (const auto& [key, field] :
+       {std::pair<const char*, double physics::RestitutionSpeedDependence::*>{
+            "knee_speed_mps", &physics::RestitutionSpeedDependence::knee_speed_mps},
+        {"falloff_exponent", &physics::RestitutionSpeedDependence::falloff_exponent}}) {
+    if (!given.contains(key)) {
+      throw py::value_error(std::string(kName) + " has no " + key +
+                            ": it needs both knee_speed_mps (m/s) and falloff_exponent");
+    }
+    law.*field = py::cast<double>(given[key]);
+  }
+  physics::validateRestitutionSpeedDependence(law);  // ValueError naming the key and value
+  return law;
+}
+
 py::dict cushionImpact(double speed, double angle_deg, double topspin, double sidespin,
                        const std::string& solver, double mass, double radius,
                        std::optional<double> contact_height, double restitution,
-                       double cushion_friction, double cloth_friction, int steps,
+                       double cushion_friction, double cloth_friction,
+                       const std::optional<py::dict>& restitution_speed_dependence, int steps,
                        std::optional<double> tolerance) {
   for (const auto& [name, value] : {std::pair<const char*, double>{"speed", speed},
                                     {"angle_deg", angle_deg}, {"topspin", topspin},
@@ -47,6 +75,8 @@ py::dict cushionImpact(double speed, double angle_deg, double topspin, double si
   params.restitution = restitution;
   params.cushion_friction = cushion_friction;
   params.cloth_friction = cloth_friction;
+  if (restitution_speed_dependence)
+    params.restitution_speed_dependence = speedLawOf(*restitution_speed_dependence);
   const double spin_unit_radps = speed / radius;  // V0 / R
   const physics::BallVelocity incoming = physics::incomingBall(
       speed, angle_deg * kRadiansPerDegree, topspin * spin_unit_radps, sidespin * spin_unit_radps);
@@ -83,12 +113,15 @@ void bindCushion(py::module_& module) {
              py::arg("restitution") = defaults.restitution,
              py::arg("cushion_friction") = defaults.cushion_friction,
              py::arg("cloth_friction") = defaults.cloth_friction,
+             py::arg("restitution_speed_dependence") = py::none(),
              py::arg("steps") = physics::PaperSolverOptions{}.steps,
              py::arg("tolerance") = py::none(),
              "One cushion impact by the model of Mathavan, Jackson & Parkin (2010), as `baize "
              "cushion`: speed V0 (m/s), angle from the cushion line (90: head-on), topspin and "
              "sidespin in units of V0/R (topspin 1: natural roll), the ball's mass (kg) and radius "
-             "(m), the nose height (m; default 7R/5), e_e, mu_w, mu_s, the solver ('exact' with "
+             "(m), the nose height (m; default 7R/5), e_e, mu_w, mu_s, the optional speed dependence of e_e "
+             "(a dict with knee_speed_mps and falloff_exponent, as a scene's "
+             "physics.cushion.restitution_speed_dependence), the solver ('exact' with "
              "its tolerance or 'paper' with its steps). Returns a dict: velocity and spin after "
              "(numpy 3-vectors in the cushion's frame, m/s and rad/s), rebound_speed (m/s), "
              "rebound_angle_deg, compression_impulse and final_impulse (N s). Values out of range "

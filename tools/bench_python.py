@@ -112,10 +112,11 @@ def check_same_shots(scenes, batch_output):
 
 def batch_figures(scenes, repeats, program):
     """Shots per second of simulate_many on 1 thread and of `baize batch --threads 1`, both on one
-    core, and of simulate_many on 2 threads, run in turn `repeats` times; their medians. Both run
-    warm: simulate_many after an untimed pass; the batch as the time of two more passes over the
-    shots in one process less that of one pass (its start and the cushion table's first build
-    taken away)."""
+    core, and of simulate_many on 2 threads, run in turn `repeats` times: their medians, and the
+    median of the 2-thread / 1-thread ratios of each turn (side by side, so a slow spell of the
+    machine does not fall on one side alone). Both run warm: simulate_many after an untimed pass;
+    the batch as the time of two more passes over the shots in one process less that of one pass
+    (its start and the cushion table's first build taken away)."""
     one, batch, two = [], [], []
     with tempfile.TemporaryDirectory() as folder:
         if program:
@@ -125,13 +126,14 @@ def batch_figures(scenes, repeats, program):
         for _ in range(repeats):
             with one_core():
                 one.append(len(scenes) / timed_s(lambda: baize.simulate_many(scenes, threads=1)))
-                if program:
+            two.append(len(scenes) / timed_s(lambda: baize.simulate_many(scenes, threads=2)))
+            if program:
+                with one_core():
                     extra_s = timed_s(lambda: run_batch(program, thrice)) - timed_s(
                         lambda: run_batch(program, once))
-                    batch.append(2 * len(scenes) / extra_s)
-            two.append(len(scenes) / timed_s(lambda: baize.simulate_many(scenes, threads=2)))
+                batch.append(2 * len(scenes) / extra_s)
     return (statistics.median(one), statistics.median(batch) if batch else None,
-            statistics.median(two))
+            statistics.median(two), statistics.median(t / o for t, o in zip(two, one)))
 
 
 def dask_figures(scenes, chunk):
@@ -166,11 +168,11 @@ def arguments(argv):
 def main():
     quick, program = arguments(sys.argv[1:])
     single, repeats = (20, 3) if quick else (300, 21)
-    batch, batch_repeats = (200, 1) if quick else (5000, 5)
+    batch, batch_repeats = (200, 1) if quick else (5000, 9)
     dask_shots, chunk = (200, 50) if quick else (10000, 500)
     s = single_shot_figures(baize.random_shots(single, seed=1), repeats)
     scenes = baize.random_shots(batch, seed=2)
-    one, batch_rate, two = batch_figures(scenes, batch_repeats, program)
+    one, batch_rate, two, scaling = batch_figures(scenes, batch_repeats, program)
     lines = [
         "## Python (`tools/bench_python.py`)",
         "",
@@ -181,8 +183,8 @@ def main():
         "over shots of each shot's median times; each clock's own cost, measured empty, taken off: "
         f"{s['python_clock_ns']:.0f} ns in Python, {s['native_clock_ns']:.0f} ns in C++).",
         f"- `baize.simulate_many` on {batch} random shots: {one:.0f} shots/s on 1 thread (one core), "
-        f"{two:.0f} shots/s on 2 threads (two cores): ratio {two / one:.2f} (median of "
-        f"{batch_repeats}).",
+        f"{two:.0f} shots/s on 2 threads (two cores): ratio {scaling:.2f} (median of "
+        f"the ratios of {batch_repeats} pairs of runs side by side).",
     ]
     if batch_rate is None:
         lines.append("- `baize batch`: not measured (no baize program: built with "

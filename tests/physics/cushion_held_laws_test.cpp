@@ -1,7 +1,8 @@
 // Tests of the exact cushion solver's held laws: sliding contacts slide along their slips; a held
 // contact sticks only while its cone holds it and otherwise slides along phi*, the direction in
 // which its slip grows along itself (closed form, Newton's method and the search of the circle
-// agree on it); the lag correction blends the directions by the given share.
+// agree on it); the lag correction blends the directions by the given share, the lag of a slip
+// growing from rest.
 #include "physics/cushion_held_laws.h"
 
 #include <gtest/gtest.h>
@@ -80,20 +81,29 @@ TEST(CushionHeldLaws, HeldClothSticksInsideItsConeAndElseSlidesAlongPhiStar) {
   EXPECT_GT(stuck + sliding, 0);
 }
 
-TEST(CushionHeldLaws, PhiStarOfTheNoseIsTheSameByEveryMethod) {
-  // A slippery nose held while the cloth slides: the stick law needs a friction of about
-  // s c / (s^2 + 5/2) = 0.14 of the normal impulse, beyond its cone.
+// For balls at 2 m/s with backspin and sidespin meeting the snooker cushion with nose friction
+// mu_w at a few angles: check(impact, laws, angle_deg) with the nose held (its slip set aside)
+// while the cloth slides along its slip, at the impact's start.
+template <typename Check>
+void forHeldNoseUnderSlidingCloth(double mu_w, const Check& check) {
   CushionParams p = test::snookerCushion();
-  p.cushion_friction = 0.05;
+  p.cushion_friction = mu_w;
   for (double angle_deg : {20.0, 45.0, 80.0}) {
     const double a = angle_deg * 3.14159265358979323846 / 180;
     Held impact(p, incomingBall(2.0, a, -1.0 / p.radius_m, 2.0 / p.radius_m), kTolerance);
     impact.setContactMode(0, ContactMode::Stick);
-    auto u = impact.slips(State::Zero());
-    u[0].setZero();
+    const auto u = impact.slips(State::Zero());
     Laws laws;
     laws.stick = {true, false};
     laws.direction = {Eigen::Vector2d::UnitX(), u[1].normalized()};
+    check(impact, laws, angle_deg);
+  }
+}
+
+TEST(CushionHeldLaws, PhiStarOfTheNoseIsTheSameByEveryMethod) {
+  // A slippery nose held while the cloth slides: the stick law needs a friction of about
+  // s c / (s^2 + 5/2) = 0.14 of the normal impulse, beyond its cone.
+  forHeldNoseUnderSlidingCloth(0.05, [](Held& impact, const Laws& laws, double angle_deg) {
     ASSERT_LT(impact.coneMargin(0, impact.frictionFor(laws)), 0) << angle_deg;
     const Eigen::Vector2d searched = impact.creepDirectionSearch(0, laws);
     expectGrowsAlongItself(impact, 0, laws, searched);
@@ -102,7 +112,32 @@ TEST(CushionHeldLaws, PhiStarOfTheNoseIsTheSameByEveryMethod) {
         (searched + 0.05 * Eigen::Vector2d(-searched.y(), searched.x())).normalized();
     ASSERT_TRUE(impact.creepDirection(0, laws, guess, &newton)) << angle_deg;
     EXPECT_NEAR((newton - searched).norm(), 0, 1e-8) << angle_deg;
-  }
+  });
+}
+
+TEST(CushionHeldLaws, TheSearchForAHeldNoseItsConeHoldsFindsNoGrowingDirection) {
+  // A grippy nose held while the cloth slides: its cone holds it, so along no direction does its
+  // slip grow along itself, and the search ends on the rate's mean over opposite directions.
+  forHeldNoseUnderSlidingCloth(0.3, [](Held& impact, const Laws& laws, double angle_deg) {
+    ASSERT_GT(impact.coneMargin(0, impact.frictionFor(laws)), 0) << angle_deg;
+    Laws sliding = laws;
+    sliding.stick[0] = false;
+    auto rateAlong = [&](const Eigen::Vector2d& d) {
+      sliding.direction[0] = d;
+      return impact.slipRate(0, impact.frictionFor(sliding));
+    };
+    constexpr int kScan = 3600;  // no root of cross(d, r(d)) on a fine scan grows
+    for (int i = 0; i < kScan; ++i) {
+      const double phi = 2 * 3.14159265358979323846 * i / kScan;
+      const Eigen::Vector2d d(std::cos(phi), std::sin(phi));
+      if (std::abs(cross(d, rateAlong(d))) < 1e-3 * rateAlong(d).norm()) {
+        EXPECT_LE(rateAlong(d).dot(d), 0) << angle_deg << " deg, phi " << phi;
+      }
+    }
+    const Eigen::Vector2d mean =
+        (rateAlong(Eigen::Vector2d(1, 0)) + rateAlong(Eigen::Vector2d(-1, 0))).normalized();
+    EXPECT_NEAR((impact.creepDirectionSearch(0, laws) - mean).norm(), 0, 1e-12) << angle_deg;
+  });
 }
 
 TEST(CushionHeldLaws, LagCorrectionBlendsByTheShare) {
@@ -112,11 +147,46 @@ TEST(CushionHeldLaws, LagCorrectionBlendsByTheShare) {
   const Eigen::Vector2d half = HeldLaws::lagCorrected(origin, phi, 0.5);
   EXPECT_NEAR(half.x(), std::sqrt(0.5), kRoundoff);
   EXPECT_NEAR(half.y(), std::sqrt(0.5), kRoundoff);
-  // The share of phi*'s turn a slip growing from rest follows: restoring / (growth / order +
-  // restoring), 1 where nothing restores or grows.
-  EXPECT_DOUBLE_EQ(HeldLaws::lagShareOf(2, 2, 1), 0.5);
-  EXPECT_DOUBLE_EQ(HeldLaws::lagShareOf(2, 2, 2), 2.0 / 3);
+  // 1 (no correction) where nothing restores or grows.
   EXPECT_EQ(HeldLaws::lagShareOf(0, 2, 1), 1);
+  EXPECT_EQ(HeldLaws::lagShareOf(2, 0, 2), 1);
+}
+
+// The lag of a slip growing from rest behind phi* turning steadily at omega (rad per N s): the
+// slip's direction theta follows d theta/dP = kappa (phi* - theta) / |u(P)|, so the lag l = phi* -
+// theta solves l' = omega - kappa l / |u|, l(0) = 0: l(x) = omega int_0^x exp(-int_s^x kappa / |u|)
+// ds, here by Simpson's rule on [0, x] (the integrand is smooth, concentrated within |u| / kappa of
+// x). `exponent(s)` is int_s^x kappa / |u|.
+template <typename Exponent>
+double lagBehindSteadyTurn(double omega, double x, const Exponent& exponent) {
+  constexpr int kIntervals = 200000;  // even; the integrand's width is >= 1e-3 x here
+  const double h = x / kIntervals;
+  double sum = 0;
+  for (int i = 1; i <= kIntervals; ++i) {  // the integrand vanishes at s = 0
+    const double weight = i == kIntervals ? 1 : (i % 2 == 1 ? 4 : 2);
+    sum += weight * std::exp(-exponent(i * h));
+  }
+  return omega * sum * h / 3;
+}
+
+TEST(CushionHeldLaws, LagShareMatchesTheLagOfASlipGrowingFromRest) {
+  const double kappa = 3, omega = 0.7, x = 0.01;  // restoring rate (m/s per N s), N s from rest
+  for (double growth_over_kappa : {0.05, 0.1, 0.2}) {
+    const double g = growth_over_kappa * kappa;  // the slip's growth rate now, d|u|/dP
+    // Growing linearly, |u| = g s: the share is exact.
+    const double linear_lag =
+        lagBehindSteadyTurn(omega, x, [&](double s) { return kappa / g * std::log(x / s); });
+    EXPECT_NEAR(1 - linear_lag / (omega * x), HeldLaws::lagShareOf(g, kappa, 1), 1e-9);
+    // Growing from a zero rate, |u| = a s^2 with g = 2 a x: the share matches the lag to second
+    // order in g / kappa, its relative error about half of (g / kappa)^2 (first order only, it
+    // was g / 2 kappa).
+    const double a = g / (2 * x);
+    const double from_edge_lag =
+        lagBehindSteadyTurn(omega, x, [&](double s) { return kappa / a * (1 / s - 1 / x); });
+    const double share_lag = (1 - HeldLaws::lagShareOf(g, kappa, 2)) * omega * x;
+    EXPECT_LT(std::abs(share_lag / from_edge_lag - 1), 0.6 * growth_over_kappa * growth_over_kappa)
+        << growth_over_kappa;
+  }
 }
 
 }  // namespace

@@ -1,12 +1,15 @@
 // Tests of the rolling balls' cushion table: its answers lie within the promised 1e-8 V0 of the
 // exact solver at its tightest tolerance, it answers rolling balls only and only inside its plane,
-// mirror images get mirror answers to the bit, answers scale with V0, and each parameter set has
-// its own table.
+// mirror images get mirror answers to the bit, answers scale with V0, each parameter set has its
+// own table, and threads answering at once get the answers of one thread.
 #include "physics/cushion_rolling_surface.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <thread>
+#include <vector>
 
 #include "physics/cushion_exact_solver.h"
 #include "tests/physics/cushion_test_support.h"
@@ -110,6 +113,49 @@ TEST(CushionRollingSurface, EachParameterSetHasItsOwnTable) {
   CushionParams bad = p;
   bad.restitution = 2;
   EXPECT_THROW(rollingSurfaceFor(bad), std::invalid_argument);
+}
+
+// Threads that race to build the same cells while others read them get, to the bit, what one
+// thread gets from a surface of its own.
+TEST(CushionRollingSurface, ThreadsAnsweringAtOnceGetTheAnswersOfOneThread) {
+  const CushionParams p = poolCushion();
+  std::mt19937_64 generator(11);
+  // A few root cells' worth of the plane, so the threads meet in the same cells.
+  std::uniform_real_distribution<double> speed(0.5, 2), alpha(degrees(80), degrees(100)),
+      side(-0.4, 0.4);
+  std::vector<BallVelocity> impacts;
+  for (int i = 0; i < 64; ++i)
+    impacts.push_back(rolling(p, speed(generator), alpha(generator), side(generator)));
+  CushionRollingSurface alone(p);
+  std::vector<std::optional<BallVelocity>> expected;
+  for (const BallVelocity& in : impacts) expected.push_back(alone.answer(in));
+
+  constexpr int kThreads = 4;
+  CushionRollingSurface shared(p);
+  std::vector<std::vector<std::optional<BallVelocity>>> answers(
+      kThreads, std::vector<std::optional<BallVelocity>>(impacts.size()));
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      for (std::size_t k = 0; k < impacts.size(); ++k) {
+        const std::size_t i = (k * (2 * t + 1) + 7 * t) % impacts.size();  // each its own order
+        answers[t][i] = shared.answer(impacts[i]);
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  int answered = 0;
+  for (int t = 0; t < kThreads; ++t) {
+    for (std::size_t i = 0; i < impacts.size(); ++i) {
+      ASSERT_EQ(answers[t][i].has_value(), expected[i].has_value()) << "thread " << t << " impact " << i;
+      if (!expected[i]) continue;
+      ++answered;
+      EXPECT_EQ(answers[t][i]->v, expected[i]->v) << "thread " << t << " impact " << i;
+      EXPECT_EQ(answers[t][i]->w, expected[i]->w) << "thread " << t << " impact " << i;
+    }
+  }
+  EXPECT_GT(answered, kThreads * 48);  // most of these rolling impacts lie in kept cells
+  EXPECT_EQ(shared.stats().cells_built, alone.stats().cells_built);  // each cell built once
 }
 
 }  // namespace

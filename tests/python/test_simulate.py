@@ -169,6 +169,30 @@ def test_cushion_impact_head_on_rolling():
         baize.cushion_impact(speed=float("inf"))
 
 
+def test_cushion_impact_takes_the_shipped_speed_dependence(prefix):
+    """The snooker fit, read from the shipped file: no change at or below the knee; above it the
+    rebound ratio falls while the rebound speed still rises."""
+    import json
+    shipped = json.loads((prefix / "share" / "baize" / "measurements" /
+                          "snooker-speed-dependence.json").read_text())
+    law = shipped["cushion"]["restitution_speed_dependence"]
+    knee = law["knee_speed_mps"]
+    slow = baize.cushion_impact(speed=0.5 * knee, restitution_speed_dependence=law)
+    assert slow["rebound_speed"] == baize.cushion_impact(speed=0.5 * knee)["rebound_speed"]
+    fast, faster = (baize.cushion_impact(speed=s * knee, restitution_speed_dependence=law)
+                    for s in (2, 3))
+    constant = baize.cushion_impact(speed=2 * knee)
+    assert fast["rebound_speed"] < constant["rebound_speed"]
+    assert faster["rebound_speed"] > fast["rebound_speed"]
+    assert faster["rebound_speed"] / (3 * knee) < fast["rebound_speed"] / (2 * knee)
+    with pytest.raises(ValueError, match="falloff_exponent = 2"):
+        baize.cushion_impact(restitution_speed_dependence={"knee_speed_mps": 2, "falloff_exponent": 2})
+    with pytest.raises(ValueError, match="knee_speed"):
+        baize.cushion_impact(restitution_speed_dependence={"falloff_exponent": 0.3})
+    with pytest.raises(ValueError, match="'knee' is not allowed"):
+        baize.cushion_impact(restitution_speed_dependence={"knee": 2, "falloff_exponent": 0.3})
+
+
 @pytest.mark.skipif(not baize.with_render, reason="built without rendering")
 def test_render_png_writes_a_picture(tmp_path, scenes_dir):
     scene = baize.load_scene(str(scenes_dir / "stun-shot.json"))

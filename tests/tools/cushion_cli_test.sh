@@ -149,6 +149,24 @@ assert loose["setting"] == "tol=1e-06", loose["setting"]
 close(loose["speed_ratio"], exact["speed_ratio"], 1e-5, "exact at 1e-6")
 ' "$work"/{frictionless,slow,fast,mirror,radius,radius_h,coarse,loose,default}.json
 
+# The speed dependence of e_e: no change below the knee; above it the rebound ratio falls while the
+# rebound speed still rises; the JSON names the law as a scene does.
+law=(--knee-speed 2.12 --falloff-exponent 0.31)
+json_of law_slow --speed 1.5 "${law[@]}"
+json_of plain_slow --speed 1.5
+json_of law_fast --speed 5 "${law[@]}"
+json_of law_faster --speed 8 "${law[@]}"
+json_of plain_fast --speed 5
+check_python '
+law_slow, plain_slow, law_fast, law_faster, plain_fast = map(load, sys.argv[1:])
+assert law_slow["v"] == plain_slow["v"] and law_slow["w"] == plain_slow["w"], "below the knee"
+assert law_fast["speed_ratio"] < plain_fast["speed_ratio"], "above the knee e_e falls"
+assert law_faster["speed_ratio"] < law_fast["speed_ratio"], "and falls further"
+assert law_faster["speed"] > law_fast["speed"], "while the rebound still grows"
+assert law_fast["params"]["restitution_speed_dependence"] == {"knee_speed_mps": 2.12, "falloff_exponent": 0.31}
+assert "restitution_speed_dependence" not in plain_fast["params"]
+' "$work"/{law_slow,plain_slow,law_fast,law_faster,plain_fast}.json
+
 # ---- 4. Bad input: a message naming the flag, exit status 2 (usage) or 1 (failure), no output.
 # expect_error STATUS TEXT ARGS...: baize ARGS must exit STATUS and print TEXT on stderr.
 expect_error() {
@@ -181,6 +199,13 @@ expect_error 2 "baize cushion: error: --speed = 10000 is not allowed: it must li
   cushion --speed 1e4
 expect_error 2 "--topspin = 1e+09 is not allowed: with --speed 1 and --radius 0.02625" cushion --topspin 1e9
 expect_error 2 "--sidespin = -3e+06 is not allowed" cushion --sidespin -3e6
+expect_error 2 "--knee-speed was given without --falloff-exponent" cushion --knee-speed 2
+expect_error 2 "--falloff-exponent was given without --knee-speed" cushion --falloff-exponent 0.3
+expect_error 2 "baize cushion: error: --falloff-exponent = 1.5 is not allowed: it must lie in [0, 1]" \
+  cushion --knee-speed 2 --falloff-exponent 1.5
+expect_error 2 "--knee-speed = -1 is not allowed: it must be a speed in (0, 1000] m/s" \
+  cushion --knee-speed -1 --falloff-exponent 0.3
+expect_error 2 "--knee-speed = nan is not allowed" cushion --knee-speed nan --falloff-exponent 0.3
 expect_error 2 "--json excludes --sweep" cushion --sweep "$work/never" --json "$work/never.json"
 expect_error 2 "--bogus" cushion --bogus
 expect_error 2 "A subcommand is required" bench

@@ -98,8 +98,12 @@ void printHuman(const CushionFlags& flags, const physics::BallVelocity& incoming
       << settingLabel(flags.setting) << ")\n";
   out << "  ball:      M = " << p.mass_kg << " kg, R = " << p.radius_m << " m\n";
   out << "  cushion:   h = " << p.contact_height_m
-      << " m (sin theta = " << physics::contactSinTheta(p) << "), e_e = " << p.restitution
-      << ", mu_w = " << p.cushion_friction << "; cloth mu_s = " << p.cloth_friction << '\n';
+      << " m (sin theta = " << physics::contactSinTheta(p) << "), e_e = " << p.restitution;
+  if (const auto& law = p.restitution_speed_dependence) {
+    out << " up to " << law->knee_speed_mps << " m/s normal speed, times (" << law->knee_speed_mps
+        << " / v)^" << law->falloff_exponent << " above";
+  }
+  out << ", mu_w = " << p.cushion_friction << "; cloth mu_s = " << p.cloth_friction << '\n';
   out << "  incoming:  V0 = " << shot.speed_mps << " m/s at alpha = " << shot.angle_deg
       << " deg, topspin " << shot.topspin_k << " V0/R, sidespin " << shot.sidespin_k << " V0/R\n";
   out << "             v = " << vectorText(incoming.v) << " m/s, w = " << vectorText(incoming.w)
@@ -133,7 +137,7 @@ void writeJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
                        {"contact", contactName(change.contact)},
                        {"mode", modeName(change.mode)}});
   }
-  const nlohmann::json out = {
+  nlohmann::json out = {
       {"solver", solverName(flags.setting.kind)},
       {"setting", settingLabel(flags.setting)},
       {"params",
@@ -161,6 +165,10 @@ void writeJson(const CushionFlags& flags, const physics::BallVelocity& incoming,
       {"contact_changes", changes},
       {"rhs_evaluations", result.rhs_evaluations},
   };
+  if (const auto& law = p.restitution_speed_dependence) {  // named as in a scene's physics.cushion
+    out["params"]["restitution_speed_dependence"] = {{"knee_speed_mps", law->knee_speed_mps},
+                                                     {"falloff_exponent", law->falloff_exponent}};
+  }
   // nlohmann::json writes each double with the shortest digits that read back bit for bit.
   AtomicFile file(flags.json_path, "--json");
   file.stream() << out.dump(2) << '\n';
@@ -282,6 +290,7 @@ void addCushionCommand(CLI::App& parent) {
                               ->capture_default_str();
 
   addCushionParamFlags(command, &flags->cushion_flags);
+  addRestitutionSpeedFlags(command, &flags->cushion_flags);
 
   CLI::Option* json =
       command

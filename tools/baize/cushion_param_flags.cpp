@@ -1,6 +1,8 @@
 #include "tools/baize/cushion_param_flags.h"
 
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "tools/baize/cli_errors.h"
 
@@ -22,7 +24,39 @@ constexpr CushionFlag kCushionFlags[] = {
     {"--mu-s", "cloth friction mu_s", &physics::CushionParams::cloth_friction},
 };
 
+// The speed law's flags with the keys physics names in its refusals.
+constexpr std::pair<const char*, const char*> kSpeedLawFlags[] = {
+    {"--knee-speed", "restitution_speed_dependence.knee_speed_mps"},
+    {"--falloff-exponent", "restitution_speed_dependence.falloff_exponent"},
+};
+
+bool given(const CLI::Option* flag) { return flag != nullptr && flag->count() > 0; }
+
+// The speed law when both its flags were given; nothing when neither was.
+std::optional<physics::RestitutionSpeedDependence> speedLawOf(const CushionParamFlags& flags) {
+  const bool knee = given(flags.knee_speed_flag), falloff = given(flags.falloff_exponent_flag);
+  if (knee != falloff) {
+    throw UsageError(std::string(knee ? "--knee-speed" : "--falloff-exponent") +
+                     " was given without " + (knee ? "--falloff-exponent" : "--knee-speed") +
+                     ": the speed dependence of e_e takes both");
+  }
+  if (!knee) return std::nullopt;
+  requireFiniteFlag("--knee-speed", flags.speed_law.knee_speed_mps);
+  requireFiniteFlag("--falloff-exponent", flags.speed_law.falloff_exponent);
+  return flags.speed_law;
+}
+
 }  // namespace
+
+void addRestitutionSpeedFlags(CLI::App* command, CushionParamFlags* flags) {
+  flags->knee_speed_flag = command->add_option(
+      "--knee-speed", flags->speed_law.knee_speed_mps,
+      "knee speed of e_e's speed dependence (m/s): above this normal speed e_e falls as "
+      "(knee / v)^p; with --falloff-exponent (default: no dependence)");
+  flags->falloff_exponent_flag = command->add_option(
+      "--falloff-exponent", flags->speed_law.falloff_exponent,
+      "falloff exponent p of e_e's speed dependence, in [0, 1]; with --knee-speed");
+}
 
 void addCushionParamFlags(CLI::App* command, CushionParamFlags* flags) {
   physics::CushionParams& p = flags->params;
@@ -43,6 +77,7 @@ physics::CushionParams cushionParamsOf(const CushionParamFlags& flags) {
     p.contact_height_m = p.radius_m * 7.0 / 5.0;  // the paper's h = 7R/5
   }
   for (const CushionFlag& f : kCushionFlags) requireFiniteFlag(f.flag, p.*f.value);
+  p.restitution_speed_dependence = speedLawOf(flags);
   try {
     physics::validateCushionParams(p);
   } catch (const std::invalid_argument& rejected) {
@@ -56,6 +91,9 @@ std::string namingTheCushionFlag(const std::string& physics_message) {
     if (physics_message.rfind(f.quantity, 0) == 0) {
       return namingTheFlag(physics_message, f.quantity, f.flag);
     }
+  }
+  for (const auto& [flag, key] : kSpeedLawFlags) {
+    if (physics_message.rfind(key, 0) == 0) return namingTheFlag(physics_message, key, flag);
   }
   return physics_message;
 }

@@ -27,9 +27,9 @@ using ::testing::Not;
 // The bound on overlap at any event (m): rounding of positions of order 1 m, with room.
 constexpr double kOverlapTolerance_m = 1e-9;
 // See NineBallBreakIsPinnedBitForBit. Changes only when the arithmetic changes on purpose (last:
-// the pool tables' cushions carry restitution 0.74 fitted to pool rail figures, and the default
-// cushion model answers rolling balls' impacts from its table of exact solutions).
-constexpr std::uint64_t kPinnedNineBallBreakHash = 12354202375175325832ULL;
+// the exact cushion solver's held law for a slip growing from its cone's edge follows phi* by a
+// share matched to second order, so it runs longer; the break moved by under 1e-10 m and s).
+constexpr std::uint64_t kPinnedNineBallBreakHash = 5896423661067574635ULL;
 
 std::string sceneError(const nlohmann::json& document) {
   try {
