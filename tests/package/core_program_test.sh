@@ -43,6 +43,7 @@ refused() {
     fail "baize $* left files: $(ls -A)"
 }
 refused "'baize simulate --png'" simulate "$scene" --png shot.png
+refused "'baize simulate --png'" simulate "$scene" --png ""  # refused before its value is checked
 refused "'baize simulate --gif'" simulate "$scene" --gif shot.gif
 refused "'baize simulate --width'" simulate "$scene" --width 800
 refused "'baize sweep --png'" sweep "$scene" --vary speed=1:2:1 --png map.png

@@ -194,9 +194,9 @@ void addCalibrateCommand(CLI::App& parent, const Drawing* drawing) {
   needsDrawing(*command,
                command
                    ->add_option("--png", flags->png_path,
-                                "write a chart of measured and fitted rebound speeds")
-                   ->check(notEmpty()),
-               drawing);
+                                "write a chart of measured and fitted rebound speeds"),
+               drawing)
+      ->check(notEmpty());
   command->add_option("--json", flags->json_path,
                       "write the fit as JSON to this file ('-': standard output; the text report then goes to standard error)")
       ->check(notEmpty());

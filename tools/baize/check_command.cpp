@@ -224,9 +224,9 @@ void addCheckCommand(CLI::App& parent, const Drawing* drawing) {
                command
                    ->add_option("--png-dir", flags->png_dir,
                                 "draw each failing case's shot with its expected region to "
-                                "DIR/case_<case>.png")
-                   ->check(notEmpty()),
-               drawing);
+                                "DIR/case_<case>.png"),
+               drawing)
+      ->check(notEmpty());
   CLI::Option* noise =
       command->add_option("--noise", flags->noise_samples,
                           "also run N samples of each case with execution error and report the "

@@ -10,15 +10,15 @@ namespace baize::tools {
 void addPictureFlags(CLI::App& command, PictureFlags& flags, const Drawing* drawing) {
   const auto drawn = [&](CLI::Option* option) { return needsDrawing(command, option, drawing); };
   drawn(command.add_option("--png", flags.png_path,
-                           "write a picture of the shot here (PNG; -: standard output)")
-            ->check(notEmpty()));
+                           "write a picture of the shot here (PNG; -: standard output)"))
+      ->check(notEmpty());
   drawn(command
             .add_option("--png-dir", flags.frames_dir,
-                        "write the shot as numbered frames DIR/frame_00000.png ... in real time")
-            ->check(notEmpty()));
+                        "write the shot as numbered frames DIR/frame_00000.png ... in real time"))
+      ->check(notEmpty());
   drawn(command.add_option("--gif", flags.gif_path,
-                           "write the shot as an animated GIF here, in real time")
-            ->check(notEmpty()));
+                           "write the shot as an animated GIF here, in real time"))
+      ->check(notEmpty());
   flags.fps_option = drawn(
       command.add_option("--fps", flags.fps, "frames per second of --png-dir and --gif (default 30)"));
   flags.shaping_options = {

@@ -248,9 +248,9 @@ void addPlanCommand(CLI::App& parent, const Drawing* drawing) {
   needsDrawing(*command,
                command
                    ->add_option("--png", flags->png_path,
-                                "draw the best shot with its region here (PNG)")
-                   ->check(notEmpty()),
-               drawing);
+                                "draw the best shot with its region here (PNG)"),
+               drawing)
+      ->check(notEmpty());
   CLI::Option* compare_grid = command->add_flag(
       "--compare-grid", flags->compare_grid,
       "also run a blind grid of the same budget and compare the best probabilities");

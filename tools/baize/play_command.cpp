@@ -155,9 +155,9 @@ void addPlayCommand(CLI::App& parent, const Drawing* drawing) {
                       "last)")
       ->check(notEmpty());
   needsDrawing(*command,
-               command->add_option("--png-dir", flags->png_dir, "draw every shot to DIR/shot_NNN.png")
-                   ->check(notEmpty()),
-               drawing);
+               command->add_option("--png-dir", flags->png_dir, "draw every shot to DIR/shot_NNN.png"),
+               drawing)
+      ->check(notEmpty());
   command->add_option("--max-shots", flags->max_shots,
                       "stop a frame not over after this many shots (default 400)");
   command->callback([flags] {

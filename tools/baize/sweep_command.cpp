@@ -304,9 +304,9 @@ void addSweepCommand(CLI::App& parent, const Drawing* drawing) {
                    ->add_option("--png", flags->png_path,
                                 "also draw the position map here: finishing positions coloured by "
                                 "the first parameter, sized by the second, shaped by the outcome, "
-                                "with the 1-sigma ellipses under --noise (PNG, 1600 x 800)")
-                   ->check(notEmpty()),
-               drawing);
+                                "with the 1-sigma ellipses under --noise (PNG, 1600 x 800)"),
+               drawing)
+      ->check(notEmpty());
   command->callback([flags] {
     if (const int status = runReportingErrors("sweep", [&] { runSweep(*flags); })) {
       throw CLI::RuntimeError(status);
