@@ -9,7 +9,7 @@ if(BAIZE_WITH_BOX2D)
   list(APPEND baize_exported baize_box2d_pool)
 endif()
 if(BAIZE_WITH_RENDER)
-  list(APPEND baize_exported baize_whole_file baize_render_core baize_render baize_charts)
+  list(APPEND baize_exported baize_render_core baize_render baize_charts)
   list(APPEND baize_header_folders render)
 endif()
 

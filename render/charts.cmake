@@ -9,4 +9,4 @@ add_library(baize_charts STATIC
 baize_library_includes(baize_charts)
 set_target_properties(baize_charts PROPERTIES EXPORT_NAME charts)
 # Cairo is public: the tests decode the PNG files with it to check their pixels.
-target_link_libraries(baize_charts PUBLIC baize_physics baize_whole_file PkgConfig::CAIRO)
+target_link_libraries(baize_charts PUBLIC baize_engine baize_physics PkgConfig::CAIRO)

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "render/gl_renderer.h"
-#include "render/whole_file.h"
+#include "engine/io/whole_file.h"
 
 namespace baize::render {
 namespace {
@@ -135,7 +135,7 @@ void GifWriter::finish(const std::string& path) {
   const int status = EGifCloseFile(gif_, &error);
   gif_ = nullptr;
   if (status != GIF_OK) throw std::runtime_error(std::string("GIF: ") + GifErrorString(error));
-  writeWholeFile(bytes_, path);
+  engine::writeWholeFile(bytes_, path);
 }
 
 }  // namespace baize::render

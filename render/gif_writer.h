@@ -1,7 +1,7 @@
 // Writing Images (render/gl_renderer.h) as one animated GIF with giflib, frame by frame. Colours are
 // mapped to one fixed palette (a 6 x 7 x 6 colour cube, green given the most levels for the
 // cloth), each pixel to its nearest level: simple, and the same frames give the same bytes. The
-// GIF is built in memory and written whole by finish() (render/whole_file.h): no partial file.
+// GIF is built in memory and written whole by finish() (engine/io/whole_file.h): no partial file.
 #pragma once
 
 #include <cstdint>

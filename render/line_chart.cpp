@@ -12,7 +12,7 @@
 #include <stdexcept>
 
 #include "physics/value_text.h"
-#include "render/whole_file.h"
+#include "engine/io/whole_file.h"
 
 namespace baize::render {
 namespace {
@@ -498,8 +498,8 @@ std::string chartPngBytes(const LineChart& chart, int width_px, int height_px) {
 
 void writeChartPng(const LineChart& chart, const std::string& path, int width_px, int height_px) {
   const std::string png = chartPngBytes(chart, width_px, height_px);
-  const WholeFileTarget target = wholeFileTarget(path);
-  const std::string written = target.stream ? target.path : temporaryFor(target);
+  const engine::WholeFileTarget target = engine::wholeFileTarget(path);
+  const std::string written = target.stream ? target.path : engine::temporaryFor(target);
   const auto fail = [&](const std::string& what) {
     const std::string reason = errno != 0 ? std::string(": ") + std::strerror(errno) : "";
     if (!target.stream) std::remove(written.c_str());

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "render/gl_renderer.h"
-#include "render/whole_file.h"
+#include "engine/io/whole_file.h"
 
 namespace baize::render {
 namespace {
@@ -74,7 +74,7 @@ void writePng(const Image& image, const std::string& path) {
   std::vector<std::uint8_t> bytes;
   const std::string error = encode(image, &bytes);
   if (!error.empty()) throw std::runtime_error("cannot encode '" + path + "': " + error);
-  writeWholeFile(bytes, path);
+  engine::writeWholeFile(bytes, path);
 }
 
 Image readPng(const std::string& path) {

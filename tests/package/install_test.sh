@@ -4,7 +4,7 @@
 # through the program's own place (or BAIZE_DATA_DIR), never a compiled-in path.
 # Usage: install_test.sh SOURCE_DIR BUILD_DIR WORK_DIR [no-program] (WORK_DIR is emptied and left
 # holding WORK_DIR/moved, the moved prefix, for the consumer and Python tests; no-program: a build
-# without the baize program, BAIZE_WITH_RENDER=OFF, whose installed files alone are checked).
+# without the baize program, BAIZE_WITH_PROGRAM=OFF, whose installed files alone are checked).
 set -uo pipefail
 source_dir=$1 build_dir=$2 work=$3 program=${4:-with-program}
 fail() { echo "FAIL: $*" >&2; exit 1; }

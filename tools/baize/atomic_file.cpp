@@ -11,9 +11,9 @@
 
 namespace baize::tools {
 
-render::WholeFileTarget outputTarget(const std::string& flag, const std::string& path) {
+engine::WholeFileTarget outputTarget(const std::string& flag, const std::string& path) {
   try {
-    return render::wholeFileTarget(path);
+    return engine::wholeFileTarget(path);
   } catch (const std::invalid_argument& refused) {
     throw UsageError(flag + " = " + path + " is not allowed: " + refused.what());
   }
@@ -21,7 +21,7 @@ render::WholeFileTarget outputTarget(const std::string& flag, const std::string&
 
 void checkOutputPath(const std::string& flag, const std::string& path) {
   try {
-    render::prepareWholeFile(path);
+    engine::prepareWholeFile(path);
   } catch (const std::invalid_argument& refused) {
     throw UsageError(flag + " = " + path + " is not allowed: " + refused.what());
   }
@@ -29,8 +29,8 @@ void checkOutputPath(const std::string& flag, const std::string& path) {
 
 AtomicFile::AtomicFile(std::string path, std::string origin)
     : path_(std::move(path)), origin_(std::move(origin)), target_(outputTarget(origin_, path_)) {
-  temporary_path_ = target_.stream ? target_.path : render::temporaryFor(target_);
-  if (!target_.stream) render::makeParentFolders(target_.path);
+  temporary_path_ = target_.stream ? target_.path : engine::temporaryFor(target_);
+  if (!target_.stream) engine::makeParentFolders(target_.path);
   errno = 0;
   out_.open(temporary_path_, std::ios::out | (target_.stream ? std::ios::app : std::ios::trunc));
   if (!out_) fail("cannot create '" + temporary_path_ + "'");

@@ -1,21 +1,21 @@
 // A text file that appears complete or not at all: the content goes to "<path>.tmp", which is
 // renamed to <path> by commit(). The temporary is created by the constructor, so an unwritable path
 // fails before any work is done, and it is removed again if commit() is never reached. As for every
-// output (render/whole_file.h), a symbolic link is followed and a device or FIFO is written
+// output (engine/io/whole_file.h), a symbolic link is followed and a device or FIFO is written
 // straight.
 #pragma once
 
 #include <fstream>
 #include <string>
 
-#include "render/whole_file.h"
+#include "engine/io/whole_file.h"
 
 namespace baize::tools {
 
-// Where the output `flag` names at `path` goes (render::wholeFileTarget); a path no output can be
+// Where the output `flag` names at `path` goes (engine::wholeFileTarget); a path no output can be
 // written to (a directory, a loop of links, a named pipe no program reads) is refused with a
 // UsageError naming the flag.
-render::WholeFileTarget outputTarget(const std::string& flag, const std::string& path);
+engine::WholeFileTarget outputTarget(const std::string& flag, const std::string& path);
 
 // Checks before any work that an output the writers of render/ will write whole can be written at
 // `path`: makes its parent folders, refuses a directory, and creates (and removes) the temporary
@@ -42,7 +42,7 @@ class AtomicFile {
 
   std::string path_;    // as given, for messages
   std::string origin_;  // the flag that named it (initialised before target_, which names it)
-  render::WholeFileTarget target_;
+  engine::WholeFileTarget target_;
   std::string temporary_path_;  // the file written: the temporary, or the stream itself
   std::ofstream out_;
   bool committed_ = false;

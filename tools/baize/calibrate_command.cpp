@@ -17,15 +17,12 @@
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/calibrate_report.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/drawing.h"
 #include "tools/baize/progress.h"
 #include "tools/baize/thread_flag.h"
 
 namespace baize::tools {
 namespace {
-
-// The chart's size: as `baize chart` draws.
-constexpr int kChartWidthPx = 960;
-constexpr int kChartHeightPx = 600;
 
 struct CalibrateFlags {
   std::string data;
@@ -42,6 +39,7 @@ struct CalibrateFlags {
   int threads = 0;
   std::string png_path;
   std::string json_path;
+  const Drawing* drawing = nullptr;  // draws --png; none in a build without rendering
 };
 
 // A shipped name, else a file.
@@ -120,7 +118,7 @@ double maxSpeedOf(const CalibrateFlags& flags,
 
 void writeOutputs(const CalibrateFlags& flags, const engine::CushionCalibration& fit) {
   if (!flags.png_path.empty()) {
-    render::writeChartPng(calibrationChart(fit), flags.png_path, kChartWidthPx, kChartHeightPx);
+    flags.drawing->writeCalibrationChart(fit, flags.png_path);
     note(std::cout) << "wrote " << flags.png_path << '\n';
   }
   if (!flags.json_path.empty()) {
@@ -162,8 +160,9 @@ void addStartFlags(CLI::App* command, CalibrateFlags* flags) {
 
 }  // namespace
 
-void addCalibrateCommand(CLI::App& parent) {
+void addCalibrateCommand(CLI::App& parent, const Drawing* drawing) {
   auto flags = std::make_shared<CalibrateFlags>();
+  flags->drawing = drawing;
   CLI::App* command = parent.add_subcommand(
       "calibrate",
       "Fit the cushion model (restitution, friction; on request nose height and cloth friction) "
@@ -192,7 +191,11 @@ void addCalibrateCommand(CLI::App& parent) {
           ->capture_default_str();
   addStartFlags(command, flags.get());
   command->add_option("--threads", flags->threads, kThreadsHelp)->capture_default_str();
-  command->add_option("--png", flags->png_path, "write a chart of measured and fitted rebound speeds")
+  needsDrawing(*command,
+               command
+                   ->add_option("--png", flags->png_path,
+                                "write a chart of measured and fitted rebound speeds"),
+               drawing)
       ->check(notEmpty());
   command->add_option("--json", flags->json_path,
                       "write the fit as JSON to this file ('-': standard output; the text report then goes to standard error)")

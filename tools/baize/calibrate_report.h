@@ -1,13 +1,12 @@
 // What `baize calibrate` reports about a fit: the text for people, the JSON object for programs
-// (its fitted values under a scene's physics.cushion and physics.cloth keys) and the chart of
-// measured against fitted rebound speeds.
+// (its fitted values under a scene's physics.cushion and physics.cloth keys). Its chart is drawn
+// by pictures/calibration_chart.h.
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "engine/fit/cushion_calibration.h"
-#include "render/line_chart.h"
 
 namespace baize::tools {
 
@@ -17,6 +16,5 @@ inline constexpr int kLargestResidualsShown = 10;
 
 void printCalibration(const engine::CushionCalibration& fit, std::ostream& out);
 nlohmann::json calibrationJson(const engine::CushionCalibration& fit);
-render::LineChart calibrationChart(const engine::CushionCalibration& fit);
 
 }  // namespace baize::tools

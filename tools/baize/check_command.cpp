@@ -11,12 +11,11 @@
 #include <sstream>
 
 #include "engine/play/shot_suite.h"
-#include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/drawing.h"
 #include "tools/baize/output_folder.h"
 #include "tools/baize/progress.h"
-#include "tools/baize/overlay_pictures.h"
 
 namespace baize::tools {
 namespace {
@@ -33,6 +32,7 @@ struct CheckFlags {
   std::uint64_t seed = 1;
   engine::ExecutionNoise noise;  // sigmas; the flags below set them in friendlier units
   double tip_sigma_mm = 0.5;
+  const Drawing* drawing = nullptr;  // draws --png-dir; none in a build without rendering
 };
 
 std::string expectationText(const engine::ExpectationResult& r) {
@@ -71,21 +71,17 @@ std::string fileNameOf(const std::string& case_name) {
 // The pictures of failing cases: case_<case>.png.
 const OutputFileNames kCasePictureNames{"case_", ".png"};
 
-void drawFailingCase(const engine::SuiteCase& c, const std::string& dir, PngPainter& painter) {
+void drawFailingCase(const engine::SuiteCase& c, const std::string& dir, ShotPainter& painter) {
   const engine::SceneRun run = engine::runScene(c.scene, true);
-  const engine::ShotOutcome outcome = engine::shotOutcome(run, c.scene.cue_ball);
-  const double pixel_m = render::pixelSizeFor(c.scene.table, kOverlayWidth_px, kOverlayHeight_px);
-  render::Picture picture = shotPicture(c.scene, run, pixel_m);
+  std::vector<engine::CueBallRegion> regions;
   for (const engine::Expectation& e : c.expectations) {
-    if (e.kind == engine::Expectation::Kind::CueBallStopsIn) {
-      addRegion(picture, c.scene, outcome, e.region, pixel_m);
-    }
+    if (e.kind == engine::Expectation::Kind::CueBallStopsIn) regions.push_back(e.region);
   }
   const std::string path =
       (std::filesystem::path(dir) / (kCasePictureNames.prefix + fileNameOf(c.name) +
                                      kCasePictureNames.suffix))
           .string();
-  painter.write(picture, path);
+  painter.write(c.scene, run, regions, path);
   note(std::cout) << "  picture: " << path << "\n";
 }
 
@@ -141,10 +137,10 @@ int runCheck(const CheckFlags& flags) {
   std::unique_ptr<AtomicFile> junit;
   if (!flags.junit_path.empty()) junit = std::make_unique<AtomicFile>(flags.junit_path, "--junit");
   const engine::Suite suite = engine::loadSuite(flags.suite);
-  std::unique_ptr<PngPainter> painter;
+  std::unique_ptr<ShotPainter> painter;
   if (!flags.png_dir.empty()) {
     prepareOutputFolder("--png-dir", flags.png_dir, kCasePictureNames);
-    painter = std::make_unique<PngPainter>();
+    painter = flags.drawing->shotPainter();
   }
 
   std::cout << "suite: " << flags.suite << " (" << suite.cases.size() << " cases"
@@ -215,17 +211,21 @@ int runCheck(const CheckFlags& flags) {
 
 }  // namespace
 
-void addCheckCommand(CLI::App& parent) {
+void addCheckCommand(CLI::App& parent, const Drawing* drawing) {
   auto flags = std::make_shared<CheckFlags>();
+  flags->drawing = drawing;
   CLI::App* command = parent.add_subcommand(
       "check",
       "Run a shot suite: pass/fail per case with the measured values (docs/positional.md)");
   command->add_option("suite", flags->suite, "the suite file (JSON)")->required();
   command->add_option("--junit", flags->junit_path, "also write a JUnit XML report here")
       ->check(notEmpty());
-  command
-      ->add_option("--png-dir", flags->png_dir,
-                   "draw each failing case's shot with its expected region to DIR/case_<case>.png")
+  needsDrawing(*command,
+               command
+                   ->add_option("--png-dir", flags->png_dir,
+                                "draw each failing case's shot with its expected region to "
+                                "DIR/case_<case>.png"),
+               drawing)
       ->check(notEmpty());
   CLI::Option* noise =
       command->add_option("--noise", flags->noise_samples,

@@ -1,5 +1,6 @@
 // baize: the table simulator's command-line program. Each subcommand lives in its own file pair
-// (tools/baize/<name>_command.*) and registers itself on the App built here.
+// (tools/baize/<name>_command.*) and registers itself on the App built here; the commands that
+// only draw, and the drawing of the others' picture flags, come from picture_commands.h.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
@@ -9,18 +10,16 @@
 #include "tools/baize/bench_accuracy_command.h"
 #include "tools/baize/bench_cushion_command.h"
 #include "tools/baize/bench_play_command.h"
-#include "tools/baize/bench_render_command.h"
 #include "tools/baize/bench_shots_command.h"
 #include "tools/baize/calibrate_command.h"
-#include "tools/baize/chart_command.h"
 #include "tools/baize/check_command.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/command_lookup.h"
 #include "tools/baize/cushion_command.h"
+#include "tools/baize/picture_commands.h"
 #include "tools/baize/plan_command.h"
 #include "tools/baize/play_command.h"
 #include "tools/baize/progress.h"
-#include "tools/baize/render_command.h"
 #include "tools/baize/simulate_command.h"
 #include "tools/baize/standard_output.h"
 #include "tools/baize/stress_command.h"
@@ -30,18 +29,20 @@ int main(int argc, char** argv) {
   using namespace baize::tools;
   CLI::App app{"Baize: an event-based pool and snooker table simulator", "baize"};
   app.require_subcommand(1, 1);
+  // Null in a build without rendering: the commands then refuse their picture flags by name.
+  const Drawing* drawing = renderedDrawing();
 
   addBatchCommand(app);
-  addCalibrateCommand(app);
+  addCalibrateCommand(app, drawing);
   addChartCommand(app);
-  addCheckCommand(app);
+  addCheckCommand(app, drawing);
   addCushionCommand(app);
-  addPlanCommand(app);
-  addPlayCommand(app);
-  addSimulateCommand(app);
+  addPlanCommand(app, drawing);
+  addPlayCommand(app, drawing);
+  addSimulateCommand(app, drawing);
   addRenderCommand(app);
   addStressCommand(app);
-  addSweepCommand(app);
+  addSweepCommand(app, drawing);
 
   CLI::App* bench = app.add_subcommand("bench", "Measure the speed and accuracy of the models");
   bench->require_subcommand(1, 1);

@@ -10,11 +10,10 @@
 
 #include "engine/play/shot_planner.h"
 #include "engine/play/shot_suite.h"
-#include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/drawing.h"
 #include "tools/baize/progress.h"
-#include "tools/baize/overlay_pictures.h"
 
 namespace baize::tools {
 namespace {
@@ -39,6 +38,7 @@ struct PlanFlags {
   std::string png_path;
   bool compare_grid = false;
   int grid_samples = 10;
+  const Drawing* drawing = nullptr;  // draws --png; none in a build without rendering
 };
 
 int pocketIndex(const std::string& text, const engine::Scene& scene) {
@@ -215,19 +215,18 @@ void runPlan(const PlanFlags& flags) {
   if (!flags.png_path.empty() && !planned.best.empty()) {
     scene.shot = planned.best.front().shot;
     const engine::SceneRun run = engine::runScene(scene, true);
-    const engine::ShotOutcome outcome = engine::shotOutcome(run, scene.cue_ball);
-    const double pixel_m = render::pixelSizeFor(scene.table, kOverlayWidth_px, kOverlayHeight_px);
-    render::Picture picture = shotPicture(scene, run, pixel_m);
-    if (region) addRegion(picture, scene, outcome, *region, pixel_m);
-    PngPainter().write(picture, flags.png_path);
+    std::vector<engine::CueBallRegion> regions;
+    if (region) regions.push_back(*region);
+    flags.drawing->shotPainter()->write(scene, run, regions, flags.png_path);
     note(std::cout) << "picture: " << flags.png_path << "\n";
   }
 }
 
 }  // namespace
 
-void addPlanCommand(CLI::App& parent) {
+void addPlanCommand(CLI::App& parent, const Drawing* drawing) {
   auto flags = std::make_shared<PlanFlags>();
+  flags->drawing = drawing;
   CLI::App* command = parent.add_subcommand(
       "plan",
       "Search the shot most likely to pot a ball and leave the cue ball in a region, under "
@@ -246,7 +245,11 @@ void addPlanCommand(CLI::App& parent) {
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
       ->check(unsigned64());
   command->add_option("--report", flags->report, "shots reported (default 3)");
-  command->add_option("--png", flags->png_path, "draw the best shot with its region here (PNG)")
+  needsDrawing(*command,
+               command
+                   ->add_option("--png", flags->png_path,
+                                "draw the best shot with its region here (PNG)"),
+               drawing)
       ->check(notEmpty());
   CLI::Option* compare_grid = command->add_flag(
       "--compare-grid", flags->compare_grid,

@@ -10,6 +10,9 @@ class App;
 
 namespace baize::tools {
 
-void addPlanCommand(CLI::App& parent);
+class Drawing;
+
+// `drawing` makes its pictures; null in a build without rendering (picture_commands.h).
+void addPlanCommand(CLI::App& parent, const Drawing* drawing);
 
 }  // namespace baize::tools

@@ -9,11 +9,10 @@
 
 #include "engine/play/games/frame_summary.h"
 #include "engine/play/games/game_log.h"
-#include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/drawing.h"
 #include "tools/baize/output_folder.h"
-#include "tools/baize/overlay_pictures.h"
 #include "tools/baize/progress.h"
 #include "tools/baize/shot_file.h"
 
@@ -34,6 +33,7 @@ struct PlayFlags {
   std::string shots_path;
   std::string png_dir;
   int max_shots = 400;
+  const Drawing* drawing = nullptr;  // draws --png-dir; none in a build without rendering
 };
 
 engine::Game gameFlag(const std::string& name) {
@@ -79,10 +79,8 @@ void writeLog(const engine::PlayedFrame& frame, const std::string& path) {
 }
 
 void writePictures(const engine::GameSetup& setup, const engine::PlayedFrame& frame,
-                   const std::string& dir) {
-  PngPainter painter;
-  const double pixel_m =
-      render::pixelSizeFor(setup.scene.table, kOverlayWidth_px, kOverlayHeight_px);
+                   const std::string& dir, const Drawing& drawing) {
+  const std::unique_ptr<ShotPainter> painter = drawing.shotPainter();
   for (std::size_t i = 0; i < frame.shots.size(); ++i) {
     const engine::PlayedShot& shot = frame.shots[i];
     engine::GameShot stroke = shot.intended;
@@ -92,7 +90,7 @@ void writePictures(const engine::GameSetup& setup, const engine::PlayedFrame& fr
     const engine::SceneRun run = engine::runScene(scene, true);
     std::ostringstream name;
     name << kShotPictureNames.prefix << std::setw(3) << std::setfill('0') << i << kShotPictureNames.suffix;
-    painter.write(shotPicture(scene, run, pixel_m), (std::filesystem::path(dir) / name.str()).string());
+    painter->write(scene, run, {}, (std::filesystem::path(dir) / name.str()).string());
   }
 }
 
@@ -128,15 +126,16 @@ void runPlay(const PlayFlags& flags) {
   options.seed = flags.seed;
   options.max_shots = flags.max_shots;
   const engine::PlayedFrame frame = engine::playFrame(setup, options, source);
-  if (!flags.png_dir.empty()) writePictures(setup, frame, flags.png_dir);
+  if (!flags.png_dir.empty()) writePictures(setup, frame, flags.png_dir, *flags.drawing);
   if (!flags.log_path.empty()) writeLog(frame, flags.log_path);
   printSummary(frame, game);  // the result: --quiet drops only notes and progress
 }
 
 }  // namespace
 
-void addPlayCommand(CLI::App& parent) {
+void addPlayCommand(CLI::App& parent, const Drawing* drawing) {
   auto flags = std::make_shared<PlayFlags>();
+  flags->drawing = drawing;
   CLI::App* command = parent.add_subcommand(
       "play",
       "Play a frame of 9-ball, 10-ball, 8-ball or snooker from the break: two players driven by "
@@ -155,7 +154,9 @@ void addPlayCommand(CLI::App& parent) {
                       "player A's shots, one JSON object per line (the planner plays after the "
                       "last)")
       ->check(notEmpty());
-  command->add_option("--png-dir", flags->png_dir, "draw every shot to DIR/shot_NNN.png")
+  needsDrawing(*command,
+               command->add_option("--png-dir", flags->png_dir, "draw every shot to DIR/shot_NNN.png"),
+               drawing)
       ->check(notEmpty());
   command->add_option("--max-shots", flags->max_shots,
                       "stop a frame not over after this many shots (default 400)");

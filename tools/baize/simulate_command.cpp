@@ -15,10 +15,10 @@
 #include "engine/play/model_range.h"
 #include "engine/play/shot_outcome.h"
 #include "physics/value_text.h"
-#include "render/shot_record.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
-#include "tools/baize/shot_pictures.h"
+#include "tools/baize/drawing.h"
+#include "tools/baize/picture_flags.h"
 
 namespace baize::tools {
 namespace {
@@ -30,6 +30,7 @@ struct SimulateFlags {
   std::string cushion_model;         // empty: the scene's
   std::string ball_ball_model;       // empty: the scene's
   PictureFlags pictures;
+  const Drawing* drawing = nullptr;  // draws the pictures; none in a build without rendering
 };
 
 // The scene with the models the flags name, each at its defaults in place of the scene's group,
@@ -90,7 +91,9 @@ std::string vectorText(const Eigen::Vector3d& v) {
 void runSimulate(const SimulateFlags& flags) {
   std::unique_ptr<AtomicFile> json_file;
   if (!flags.json_path.empty()) json_file = std::make_unique<AtomicFile>(flags.json_path, "--json");
-  checkPictureFlags(flags.pictures);  // also without a picture output: a bad value is an error
+  // Also without a picture output: a bad value is an error. (Without a Drawing no picture flag
+  // gets this far.)
+  if (flags.drawing) flags.drawing->checkShotPictures(flags.pictures);
   const engine::Scene scene = withFlaggedModels(engine::loadScene(flags.scene), flags);
   std::vector<std::string> scene_ids;
   for (const engine::PlacedBall& b : scene.balls) scene_ids.push_back(b.id);
@@ -182,13 +185,14 @@ void runSimulate(const SimulateFlags& flags) {
     json_file->stream() << engine::resultJson(result).dump(2) << '\n';
     json_file->commit();
   }
-  if (flags.pictures.wanted()) writePictures(render::shotRecordOf(scene, run), flags.pictures);
+  if (flags.pictures.wanted()) flags.drawing->writeShotPictures(scene, run, flags.pictures);
 }
 
 }  // namespace
 
-void addSimulateCommand(CLI::App& parent) {
+void addSimulateCommand(CLI::App& parent, const Drawing* drawing) {
   auto flags = std::make_shared<SimulateFlags>();
+  flags->drawing = drawing;
   CLI::App* command = parent.add_subcommand(
       "simulate", "Strike a scene's cue ball and simulate the shot until every ball is at rest");
   command->add_option("scene", flags->scene, "the scene file (JSON, see docs/scenes.md)")
@@ -209,7 +213,7 @@ void addSimulateCommand(CLI::App& parent) {
                    "resolve ball-ball collisions by this model at its defaults instead of the "
                    "scene's (physics.ball_ball.model)")
       ->check(CLI::IsMember(engine::ballBallModels().names()));
-  addPictureFlags(*command, flags->pictures);
+  addPictureFlags(*command, flags->pictures, drawing);
   command->callback([flags] {
     if (const int status = runReportingErrors("simulate", [&] { runSimulate(*flags); })) {
       throw CLI::RuntimeError(status);

@@ -8,6 +8,9 @@ class App;
 
 namespace baize::tools {
 
-void addSimulateCommand(CLI::App& parent);
+class Drawing;
+
+// `drawing` makes its pictures; null in a build without rendering (picture_commands.h).
+void addSimulateCommand(CLI::App& parent, const Drawing* drawing);
 
 }  // namespace baize::tools

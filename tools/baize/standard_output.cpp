@@ -3,7 +3,7 @@
 #include <array>
 #include <iostream>
 
-#include "render/whole_file.h"
+#include "engine/io/whole_file.h"
 #include "tools/baize/cli_errors.h"
 
 namespace baize::tools {
@@ -16,7 +16,7 @@ constexpr std::array<const char*, 6> kOutputFileFlags = {"--json", "--csv", "--j
 }  // namespace
 
 std::vector<std::string> outputFlagsOnStandardOutput(const std::vector<std::string>& words) {
-  const std::string dash = render::kStandardOutputPath;
+  const std::string dash = engine::kStandardOutputPath;
   std::vector<std::string> found;
   for (std::size_t i = 0; i < words.size(); ++i) {
     for (const std::string flag : kOutputFileFlags) {

@@ -16,12 +16,10 @@
 #include "engine/play/shot_suite.h"
 #include "physics/cue_strike.h"
 #include "physics/value_text.h"
-#include "render/position_map.h"
-#include "render/shot_picture.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/drawing.h"
 #include "tools/baize/progress.h"
-#include "tools/baize/overlay_pictures.h"
 
 namespace baize::tools {
 namespace {
@@ -48,6 +46,7 @@ struct SweepFlags {
   std::string object;     // empty: any ball but the cue ball
   int noise_samples = 0;  // 0: no execution error columns
   std::uint64_t seed = 1;
+  const Drawing* drawing = nullptr;  // draws --png; none in a build without rendering
 };
 
 // Samples per grid point allowed with --noise: a bound that keeps a typo from running for days.
@@ -71,7 +70,7 @@ bool objectPocketed(const engine::ShotOutcome& o, const std::string& object) {
 // standard deviations along the principal axes of their covariance: the 1-sigma ellipse).
 struct NoiseSummary {
   double p_object = 0, p_cue = 0, p_miscue = 0;
-  std::optional<render::SpreadEllipse> spread;  // fewer than 2 samples on the table: none
+  std::optional<FinishSpread> spread;  // fewer than 2 samples on the table: none
 };
 
 NoiseSummary noiseSummary(const engine::Scene& scene, const SweepFlags& flags, long point) {
@@ -109,7 +108,7 @@ NoiseSummary noiseSummary(const engine::Scene& scene, const SweepFlags& flags, l
   // Principal axes of a symmetric 2x2 matrix in closed form.
   const double half_trace = (covariance(0, 0) + covariance(1, 1)) / 2;
   const double half_gap = std::hypot((covariance(0, 0) - covariance(1, 1)) / 2, covariance(0, 1));
-  render::SpreadEllipse e;
+  FinishSpread e;
   e.mean_m = mean;
   e.sd_major_m = std::sqrt(std::max(0.0, half_trace + half_gap));
   e.sd_minor_m = std::sqrt(std::max(0.0, half_trace - half_gap));
@@ -124,11 +123,6 @@ std::string noiseColumns(const NoiseSummary& s) {
   return columns + ',' + number(s.spread->mean_m.x()) + ',' + number(s.spread->mean_m.y()) + ',' +
          number(s.spread->sd_major_m) + ',' + number(s.spread->sd_minor_m) + ',' +
          number(s.spread->major_axis_rad / kDegToRad);
-}
-
-// A grid index's place along its axis, [0, 1] (0.5 for an axis of one point).
-double fraction(const Axis& axis, long i) {
-  return axis.count > 1 ? static_cast<double>(i) / static_cast<double>(axis.count - 1) : 0.5;
 }
 
 // The largest aim offset, deg: a scene's largest heading (beyond it one ulp of the heading exceeds
@@ -227,7 +221,9 @@ void runSweep(const SweepFlags& flags) {
   out << '\n';
   const physics::CueShot base = scene.shot;
   const long inner = axes.size() == 2 ? axes[1].count : 1;
-  std::vector<render::MapPoint> map;
+  SweepMap map;
+  for (const Axis& a : axes) map.axes.push_back({a.name, a.at(0), a.at(a.count - 1), a.count});
+  map.noise_samples = flags.noise_samples;
   Progress progress("points", rows);
   for (long row = 0; row < rows; ++row, progress.advance()) {
     const long i = row / inner, j = row % inner;
@@ -249,14 +245,8 @@ void runSweep(const SweepFlags& flags) {
           << o.cue_ball_pocketed << ',' << objectPocketed(o, flags.object) << ','
           << o.first_hit.value_or("") << ',' << engine::foulName(o.foul) << ',' << pocketed << ','
           << o.events << ',';
-      render::MapPoint p;
-      p.position_m = o.cue_ball_final_m;
-      p.outcome = o.cue_ball_pocketed               ? render::MapOutcome::CueBallPocketed
-                  : objectPocketed(o, flags.object) ? render::MapOutcome::ObjectPocketed
-                                                    : render::MapOutcome::Missed;
-      p.colour_fraction = fraction(axes[0], i);
-      if (axes.size() == 2) p.size_fraction = fraction(axes[1], j);
-      map.push_back(p);
+      map.finishes.push_back({i, j, o.cue_ball_final_m, o.cue_ball_pocketed,
+                              objectPocketed(o, flags.object), std::nullopt});
       marked = true;
     } catch (const std::exception& e) {
       // A grid point the strike refuses (a miscue) or that fails: a row saying why, no values.
@@ -270,26 +260,23 @@ void runSweep(const SweepFlags& flags) {
       const NoiseSummary summary = noiseSummary(scene, flags, row);
       out << ',' << noiseColumns(summary);
       // The spread belongs to the marker just made (none when the noise-free shot failed).
-      if (marked) map.back().spread = summary.spread;
+      if (marked) map.finishes.back().spread = summary.spread;
     }
     out << '\n';
   }
   if (!flags.png_path.empty()) {
-    std::vector<render::MapAxis> map_axes;
-    for (const Axis& a : axes) map_axes.push_back({a.name, a.at(0), a.at(a.count - 1)});
-    const double pixel_m = render::pixelSizeFor(scene.table, kOverlayWidth_px, kOverlayHeight_px);
-    PngPainter().write(
-        render::buildPositionMap(scene.table, map, map_axes, pixel_m, flags.noise_samples),
-        flags.png_path);
-    note(std::cerr) << "picture: " << flags.png_path << " (" << map.size() << " finishing positions)\n";
+    flags.drawing->writePositionMap(scene.table, map, flags.png_path);
+    note(std::cerr) << "picture: " << flags.png_path << " (" << map.finishes.size()
+                    << " finishing positions)\n";
   }
   if (csv) csv->commit();
 }
 
 }  // namespace
 
-void addSweepCommand(CLI::App& parent) {
+void addSweepCommand(CLI::App& parent, const Drawing* drawing) {
   auto flags = std::make_shared<SweepFlags>();
+  flags->drawing = drawing;
   CLI::App* command = parent.add_subcommand(
       "sweep", "Simulate a scene's shot over a grid of one or two shot parameters (CSV)");
   command->add_option("scene", flags->scene, "the scene file (JSON, docs/scenes.md)")->required();
@@ -312,11 +299,13 @@ void addSweepCommand(CLI::App& parent) {
   command->add_option("--seed", flags->seed, "seed of the execution error (default 1)")
       ->check(unsigned64())
       ->needs(noise);
-  command
-      ->add_option("--png", flags->png_path,
-                   "also draw the position map here: finishing positions coloured by the "
-                   "first parameter, sized by the second, shaped by the outcome, with the "
-                   "1-sigma ellipses under --noise (PNG, 1600 x 800)")
+  needsDrawing(*command,
+               command
+                   ->add_option("--png", flags->png_path,
+                                "also draw the position map here: finishing positions coloured by "
+                                "the first parameter, sized by the second, shaped by the outcome, "
+                                "with the 1-sigma ellipses under --noise (PNG, 1600 x 800)"),
+               drawing)
       ->check(notEmpty());
   command->callback([flags] {
     if (const int status = runReportingErrors("sweep", [&] { runSweep(*flags); })) {

@@ -9,6 +9,9 @@ class App;
 
 namespace baize::tools {
 
-void addSweepCommand(CLI::App& parent);
+class Drawing;
+
+// `drawing` makes its pictures; null in a build without rendering (picture_commands.h).
+void addSweepCommand(CLI::App& parent, const Drawing* drawing);
 
 }  // namespace baize::tools

@@ -20,7 +20,7 @@
 #include "render/camera.h"
 #include "render/gl_renderer.h"
 #include "render/png_writer.h"
-#include "render/whole_file.h"
+#include "engine/io/whole_file.h"
 #include "render/shot_picture.h"
 #include "render/shot_record.h"
 #include "tools/baize_view/playback.h"
@@ -300,7 +300,7 @@ int runViewer(const ViewFlags& flags) {
     }
     if (!flags.screenshot_path.empty()) {  // checked (parents made) before any drawing
       try {
-        render::prepareWholeFile(flags.screenshot_path);
+        engine::prepareWholeFile(flags.screenshot_path);
       } catch (const std::invalid_argument& refused) {
         throw std::invalid_argument("--screenshot = " + flags.screenshot_path +
                                     " is not allowed: " + refused.what());

@@ -1,4 +1,4 @@
-#include "tools/baize/accuracy_chart.h"
+#include "tools/baize/pictures/accuracy_chart.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/io/csv_table.h"
-#include "tools/baize/labelled_series.h"
+#include "tools/baize/pictures/labelled_series.h"
 
 namespace baize::tools {
 namespace {

@@ -1,11 +1,11 @@
-#include "tools/baize/render_command.h"
+#include "tools/baize/picture_commands.h"
 
 #include <CLI/CLI.hpp>
 #include <memory>
 
 #include "render/shot_record.h"
 #include "tools/baize/cli_errors.h"
-#include "tools/baize/shot_pictures.h"
+#include "tools/baize/pictures/shot_pictures.h"
 
 namespace baize::tools {
 namespace {
@@ -34,7 +34,7 @@ void addRenderCommand(CLI::App& parent) {
                    "a scene file (docs/scenes.md) or a result file of 'baize simulate --json' or "
                    "'baize batch' (docs/results.md)")
       ->required();
-  addPictureFlags(*command, flags->pictures);
+  addPictureFlags(*command, flags->pictures, renderedDrawing());
   command->callback([flags] {
     if (const int status = runReportingErrors("render", [&] { runRender(*flags); })) {
       throw CLI::RuntimeError(status);

@@ -1,4 +1,4 @@
-#include "tools/baize/shot_pictures.h"
+#include "tools/baize/pictures/shot_pictures.h"
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -31,31 +31,6 @@ std::string frameName(long index) {
   name << "frame_" << std::setw(5) << std::setfill('0') << index << ".png";
   return name.str();
 }
-
-}  // namespace
-
-void addPictureFlags(CLI::App& command, PictureFlags& flags) {
-  command.add_option("--png", flags.png_path, "write a picture of the shot here (PNG; -: standard output)")
-      ->check(notEmpty());
-  command
-      .add_option("--png-dir", flags.frames_dir,
-                  "write the shot as numbered frames DIR/frame_00000.png ... in real time")
-      ->check(notEmpty());
-  command.add_option("--gif", flags.gif_path, "write the shot as an animated GIF here, in real time")
-      ->check(notEmpty());
-  flags.fps_option =
-      command.add_option("--fps", flags.fps, "frames per second of --png-dir and --gif (default 30)");
-  flags.shaping_options = {
-      command.add_option("--width", flags.width_px, "picture width, px (default 1600)"),
-      command.add_option("--height", flags.height_px, "picture height, px (default 800)"),
-      command.add_option("--view", flags.view, "top (default) or angled"),
-      command.add_flag("--legend", flags.legend,
-                       "add a legend: each ball that moves with its speed and spin, and the key")};
-  flags.at_option = command.add_option(
-      "--at", flags.at_s, "with --png: draw the balls at this time, s, and the traces up to it (default: the end)");
-}
-
-namespace {
 
 // A flag that would do nothing is refused: whoever gives it expects it to matter.
 void refuseUnusedFlags(const PictureFlags& flags) {

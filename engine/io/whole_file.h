@@ -11,7 +11,7 @@
 #include <system_error>
 #include <vector>
 
-namespace baize::render {
+namespace baize::engine {
 
 struct WholeFileTarget {
   std::string path;     // the file to replace (the link's target for a symbolic link), or the stream
@@ -42,4 +42,4 @@ void prepareWholeFile(const std::string& path);
 // cannot, leaving no temporary behind.
 void writeWholeFile(const std::vector<std::uint8_t>& bytes, const std::string& path);
 
-}  // namespace baize::render
+}  // namespace baize::engine

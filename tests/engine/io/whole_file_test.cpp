@@ -1,4 +1,4 @@
-#include "render/whole_file.h"
+#include "engine/io/whole_file.h"
 
 #include <gtest/gtest.h>
 #include <fcntl.h>
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace baize::render {
+namespace baize::engine {
 namespace {
 
 namespace fs = std::filesystem;
@@ -110,4 +110,4 @@ TEST_F(WholeFileTest, ADirectoryIsRefused) {
 }
 
 }  // namespace
-}  // namespace baize::render
+}  // namespace baize::engine

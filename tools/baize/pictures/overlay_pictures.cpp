@@ -1,4 +1,4 @@
-#include "tools/baize/overlay_pictures.h"
+#include "tools/baize/pictures/overlay_pictures.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "tools/baize/bench_render_command.h"
+#include "tools/baize/picture_commands.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>

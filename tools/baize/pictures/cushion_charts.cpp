@@ -1,4 +1,4 @@
-#include "tools/baize/cushion_charts.h"
+#include "tools/baize/pictures/cushion_charts.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "engine/io/csv_table.h"
-#include "tools/baize/labelled_series.h"
+#include "tools/baize/pictures/labelled_series.h"
 
 namespace baize::tools {
 namespace {

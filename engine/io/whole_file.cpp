@@ -1,4 +1,4 @@
-#include "render/whole_file.h"
+#include "engine/io/whole_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-namespace baize::render {
+namespace baize::engine {
 namespace {
 
 namespace fs = std::filesystem;
@@ -113,4 +113,4 @@ void writeWholeFile(const std::vector<std::uint8_t>& bytes, const std::string& p
   }
 }
 
-}  // namespace baize::render
+}  // namespace baize::engine

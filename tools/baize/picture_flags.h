@@ -1,15 +1,11 @@
 // The picture flags shared by `baize render` and `baize simulate` (--png, --png-dir, --gif,
-// --width, --height, --view, --legend, --at, --fps) and writing the pictures they ask for: one PNG
-// of the shot at a time (the end by default), numbered PNG frames of it in real time, and/or an
-// animated GIF of the same frames.
+// --width, --height, --view, --legend, --at, --fps): what they ask for, and their registration. The
+// drawing they ask for is the renderer's (pictures/shot_pictures.h).
 #pragma once
 
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include "render/shot_record.h"
 
 namespace CLI {
 class App;
@@ -17,6 +13,8 @@ class Option;
 }
 
 namespace baize::tools {
+
+class Drawing;
 
 struct PictureFlags {
   std::string png_path;
@@ -38,16 +36,8 @@ struct PictureFlags {
   bool wanted() const { return !png_path.empty() || animated(); }
 };
 
-// The most frames one command writes (an hour at 30 frames a second would be far beyond any shot).
-constexpr long kMaxFrames = 20000;
-
-void addPictureFlags(CLI::App& command, PictureFlags& flags);
-
-// Checks every flag and that the outputs can be created (making missing parent folders), before
-// any simulation or drawing; throws UsageError naming the flag otherwise.
-void checkPictureFlags(const PictureFlags& flags);
-
-// Draws and writes what the flags ask for; prints one line per file (frames: one line in all).
-void writePictures(const render::ShotRecord& shot, const PictureFlags& flags);
+// Adds the flags to `command`; without a Drawing (a build without rendering) each is refused when
+// given (drawing.h, needsDrawing).
+void addPictureFlags(CLI::App& command, PictureFlags& flags, const Drawing* drawing);
 
 }  // namespace baize::tools

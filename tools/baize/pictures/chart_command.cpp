@@ -1,4 +1,4 @@
-#include "tools/baize/chart_command.h"
+#include "tools/baize/picture_commands.h"
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "render/line_chart.h"
-#include "tools/baize/accuracy_chart.h"
+#include "tools/baize/pictures/accuracy_chart.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/progress.h"
-#include "tools/baize/cushion_charts.h"
+#include "tools/baize/pictures/cushion_charts.h"
 
 namespace baize::tools {
 namespace {
