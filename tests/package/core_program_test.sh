@@ -49,4 +49,8 @@ refused "'baize simulate --width'" simulate "$scene" --width 800
 refused "'baize sweep --png'" sweep "$scene" --vary speed=1:2:1 --png map.png
 refused "'baize render'" render "$scene" --png shot.png
 refused "'baize bench render'" bench render
+refused "'baize render'" render --help  # a refused command's help is refused with it
+refused "'baize simulate --legend'" simulate "$scene" --legend  # a flag without a value
+refused "'baize chart'" chart sweep somewhere
+refused "'baize check --png-dir'" check "$prefix/share/baize/suites/positional-drills.json" --png-dir pictures
 echo "the core program simulated $events events and refused what draws"

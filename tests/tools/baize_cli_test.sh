@@ -27,4 +27,8 @@ expected="unknown command 'simulat'; did you mean 'simulate'?"; expect_unknown s
 expected="unknown command 'bench shot'; did you mean 'bench shots'?"; expect_unknown bench shot
 expected="unknown command 'xyzzy'. The commands are: batch bench"; expect_unknown xyzzy
 expected="unknown command 'nope'."; expect_unknown help nope
+# Words past a command without subcommands are not command names: refused, not a crash.
+expected="'baize help' takes command names only: 'foo' is not a command of 'baize simulate'"
+expect_unknown help simulate foo
+expected="'extra' is not a command of 'baize bench cushion'"; expect_unknown help bench cushion extra
 echo "baize_cli_test: ok"

@@ -30,6 +30,14 @@ std::vector<std::string> namesOf(CLI::App& parent) {
 
 }  // namespace
 
+std::string commandPath(const CLI::App& command) {
+  std::string path = command.get_name();
+  for (const CLI::App* parent = command.get_parent(); parent; parent = parent->get_parent()) {
+    path = parent->get_name() + " " + path;
+  }
+  return path;
+}
+
 CLI::App* subcommandNamed(CLI::App& parent, const std::string& name) {
   for (CLI::App* sub : parent.get_subcommands({}))
     if (sub->get_name() == name) return sub;

@@ -8,6 +8,9 @@
 
 namespace baize::tools {
 
+// "baize simulate", "baize bench render": the command as typed.
+std::string commandPath(const CLI::App& command);
+
 // The subcommand of `parent` named `name`, or null.
 CLI::App* subcommandNamed(CLI::App& parent, const std::string& name);
 

@@ -3,16 +3,9 @@
 #include <CLI/CLI.hpp>
 
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/command_lookup.h"
 
 namespace baize::tools {
-
-std::string commandPath(const CLI::App& command) {
-  std::string path = command.get_name();
-  for (const CLI::App* parent = command.get_parent(); parent; parent = parent->get_parent()) {
-    path = parent->get_name() + " " + path;
-  }
-  return path;
-}
 
 CLI::Option* needsDrawing(const CLI::App& command, CLI::Option* option, const Drawing* drawing) {
   if (drawing != nullptr) return option;

@@ -83,7 +83,4 @@ constexpr const char* kNoRendering =
 // the command and the flag) and its help says so; with one it is left as it is. Returns `option`.
 CLI::Option* needsDrawing(const CLI::App& command, CLI::Option* option, const Drawing* drawing);
 
-// "baize simulate", "baize bench render": the command as typed.
-std::string commandPath(const CLI::App& command);
-
 }  // namespace baize::tools

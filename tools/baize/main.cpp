@@ -65,7 +65,14 @@ int main(int argc, char** argv) {
       words.erase(words.begin());
       checkCommandWords(app, words);
       CLI::App* shown = &app;
-      for (const std::string& word : words) shown = subcommandNamed(*shown, word);
+      for (const std::string& word : words) {
+        CLI::App* named = subcommandNamed(*shown, word);
+        if (named == nullptr) {  // past a command that has no subcommands: not a command name
+          throw UsageError("'baize help' takes command names only: '" + word +
+                           "' is not a command of '" + commandPath(*shown) + "'");
+        }
+        shown = named;
+      }
       std::cout << shown->help();
       return 0;
     }

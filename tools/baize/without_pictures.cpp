@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "tools/baize/cli_errors.h"
+#include "tools/baize/command_lookup.h"
 #include "tools/baize/drawing.h"
 #include "tools/baize/picture_commands.h"
 
@@ -13,7 +14,8 @@ namespace {
 void addRefusedCommand(CLI::App& parent, const std::string& name) {
   CLI::App* command =
       parent.add_subcommand(name, "not in this build: it draws (BAIZE_WITH_RENDER=OFF)");
-  command->prefix_command();  // every word after the name is left unread, --help included
+  command->prefix_command();  // every word after the name is left unread
+  command->set_help_flag();   // --help included: it is refused as the rest
   command->callback([command] {
     throw UsageError("'" + commandPath(*command) + "' draws, and " + kNoRendering);
   });
