@@ -27,8 +27,9 @@ if [[ -n "$reference" ]]; then
     fail "the core program's report differs from the full program's (above)"
 fi
 
-# refused CMD...: exits 2, names `named` and the build option, prints nothing on standard output
-# and writes no file.
+# refused CMD...: exits 2, names `named` and the build option ($option, rendering unless set),
+# prints nothing on standard output and writes no file.
+option=BAIZE_WITH_RENDER=OFF
 refused() {
   local named=$1
   shift
@@ -37,8 +38,8 @@ refused() {
   status=$?
   [[ $status -eq 2 ]] || fail "baize $* exited $status, not 2"
   [[ -z "$stdout" ]] || fail "baize $* printed before refusing: $stdout"
-  grep -qF -- "$named" stderr.txt && grep -qF 'BAIZE_WITH_RENDER=OFF' stderr.txt ||
-    fail "baize $* did not name $named and BAIZE_WITH_RENDER=OFF: $(cat stderr.txt)"
+  grep -qF -- "$named" stderr.txt && grep -qF "$option" stderr.txt ||
+    fail "baize $* did not name $named and $option: $(cat stderr.txt)"
   [[ -z "$(ls -A | grep -v '^stderr.txt$\|^result.json$')" ]] ||
     fail "baize $* left files: $(ls -A)"
 }
@@ -53,4 +54,6 @@ refused "'baize render'" render --help  # a refused command's help is refused wi
 refused "'baize simulate --legend'" simulate "$scene" --legend  # a flag without a value
 refused "'baize chart'" chart sweep somewhere
 refused "'baize check --png-dir'" check "$prefix/share/baize/suites/positional-drills.json" --png-dir pictures
+option=BAIZE_WITH_BOX2D=OFF
+refused "'baize bench accuracy' compares against Box2D" bench accuracy --shots 5
 echo "the core program simulated $events events and refused what draws"

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "tools/baize/cli_errors.h"
+
 namespace baize::tools {
 namespace {
 
@@ -36,6 +38,14 @@ std::string commandPath(const CLI::App& command) {
     path = parent->get_name() + " " + path;
   }
   return path;
+}
+
+void addRefusedCommand(CLI::App& parent, const std::string& name, const std::string& description,
+                       const std::string& why) {
+  CLI::App* command = parent.add_subcommand(name, description);
+  command->prefix_command();  // every word after the name is left unread
+  command->set_help_flag();   // --help included: it is refused as the rest
+  command->callback([command, why] { throw UsageError("'" + commandPath(*command) + "' " + why); });
 }
 
 CLI::App* subcommandNamed(CLI::App& parent, const std::string& name) {

@@ -11,6 +11,12 @@ namespace baize::tools {
 // "baize simulate", "baize bench render": the command as typed.
 std::string commandPath(const CLI::App& command);
 
+// A subcommand of `parent` that this build lacks: it keeps its name so that typing it says why it
+// is missing rather than that it is unknown. It takes any words (--help included) and refuses them
+// all with a UsageError "'baize ... NAME' <why>", before any work.
+void addRefusedCommand(CLI::App& parent, const std::string& name, const std::string& description,
+                       const std::string& why);
+
 // The subcommand of `parent` named `name`, or null.
 CLI::App* subcommandNamed(CLI::App& parent, const std::string& name);
 

@@ -48,8 +48,13 @@ int main(int argc, char** argv) {
   bench->require_subcommand(1, 1);
   addBenchCushionCommand(*bench);
   addBenchShotsCommand(*bench);
-#ifdef BAIZE_WITH_BOX2D  // it compares against Box2D: absent from a build without it
+#ifdef BAIZE_WITH_BOX2D  // it compares against Box2D: refused by name in a build without it
   addBenchAccuracyCommand(*bench);
+#else
+  addRefusedCommand(*bench, "accuracy",
+                    "not in this build: it compares against Box2D (BAIZE_WITH_BOX2D=OFF)",
+                    "compares against Box2D, and this baize was built without it "
+                    "(BAIZE_WITH_BOX2D=OFF; Debian: libbox2d-dev)");
 #endif
   addBenchRenderCommand(*bench);
   addBenchPlayCommand(*bench);

@@ -10,22 +10,16 @@
 namespace baize::tools {
 namespace {
 
-// A command that takes any words and refuses them all, naming itself, before any work.
-void addRefusedCommand(CLI::App& parent, const std::string& name) {
-  CLI::App* command =
-      parent.add_subcommand(name, "not in this build: it draws (BAIZE_WITH_RENDER=OFF)");
-  command->prefix_command();  // every word after the name is left unread
-  command->set_help_flag();   // --help included: it is refused as the rest
-  command->callback([command] {
-    throw UsageError("'" + commandPath(*command) + "' draws, and " + kNoRendering);
-  });
+void refuseDrawingCommand(CLI::App& parent, const std::string& name) {
+  addRefusedCommand(parent, name, "not in this build: it draws (BAIZE_WITH_RENDER=OFF)",
+                    std::string("draws, and ") + kNoRendering);
 }
 
 }  // namespace
 
-void addRenderCommand(CLI::App& parent) { addRefusedCommand(parent, "render"); }
-void addChartCommand(CLI::App& parent) { addRefusedCommand(parent, "chart"); }
-void addBenchRenderCommand(CLI::App& bench) { addRefusedCommand(bench, "render"); }
+void addRenderCommand(CLI::App& parent) { refuseDrawingCommand(parent, "render"); }
+void addChartCommand(CLI::App& parent) { refuseDrawingCommand(parent, "chart"); }
+void addBenchRenderCommand(CLI::App& bench) { refuseDrawingCommand(bench, "render"); }
 
 const Drawing* renderedDrawing() { return nullptr; }
 
