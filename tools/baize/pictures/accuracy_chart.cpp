@@ -17,12 +17,6 @@ namespace {
 // position on a table means.
 constexpr double kFloorWithoutPositiveErrors_m = 1e-9;
 
-std::string shortNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 }  // namespace
 
 render::LineChart benchAccuracyChart(const std::string& csv_path) {

@@ -69,6 +69,29 @@ CLI::App* addSizeFlags(CLI::App* command, ChartFlags& flags) {
   return command;
 }
 
+// `chart NAME CSV --png OUT.png`: the chart `make` draws from one bench table.
+void addCsvChartCommand(CLI::App* chart, const std::string& name, const std::string& description,
+                        render::LineChart (*make)(const std::string& csv_path)) {
+  auto flags = std::make_shared<ChartFlags>();
+  CLI::App* command = chart->add_subcommand(name, description);
+  command->add_option("CSV", flags->input, "the bench table")->required();
+  command->add_option("--png", flags->png_path, "the PNG file to write")
+      ->required()
+      ->check(notEmpty());
+  addSizeFlags(command, *flags);
+  command->callback([flags, name, make] {
+    const int status = runReportingErrors("chart " + name, [&] {
+      checkOutputPath("--png", flags->png_path);  // parents made; no PNG can go there: refused
+      withContext(flags->input, [&] {
+        const std::filesystem::path png(flags->png_path);
+        writeCharts({{png.filename().string(), make(flags->input)}}, png.parent_path().string(),
+                    *flags);
+      });
+    });
+    if (status != 0) throw CLI::RuntimeError(status);
+  });
+}
+
 }  // namespace
 
 void addChartCommand(CLI::App& parent) {
@@ -95,51 +118,15 @@ void addChartCommand(CLI::App& parent) {
     if (status != 0) throw CLI::RuntimeError(status);
   });
 
-  auto bench_flags = std::make_shared<ChartFlags>();
-  CLI::App* bench = chart->add_subcommand(
-      "bench-cushion",
-      "From a `baize bench cushion --csv` table write a log-log chart of median time per impact "
-      "against largest error, one line per solver");
-  bench->add_option("CSV", bench_flags->input, "the bench table")->required();
-  bench->add_option("--png", bench_flags->png_path, "the PNG file to write")
-      ->required()
-      ->check(notEmpty());
-  addSizeFlags(bench, *bench_flags);
-  bench->callback([bench_flags] {
-    const ChartFlags& flags = *bench_flags;
-    const int status = runReportingErrors("chart bench-cushion", [&] {
-      checkOutputPath("--png", flags.png_path);  // parents made; no PNG can go there: refused
-      withContext(flags.input, [&] {
-        const std::filesystem::path png(flags.png_path);
-        writeCharts({{png.filename().string(), cushionBenchChart(flags.input)}},
-                    png.parent_path().string(), flags);
-      });
-    });
-    if (status != 0) throw CLI::RuntimeError(status);
-  });
-
-  auto accuracy_flags = std::make_shared<ChartFlags>();
-  CLI::App* accuracy = chart->add_subcommand(
-      "bench-accuracy",
-      "From a `baize bench accuracy --csv` table write a log-log chart of position error against "
-      "median run time per shot, one line per engine (an error of 0 drawn on a floor)");
-  accuracy->add_option("CSV", accuracy_flags->input, "the bench table")->required();
-  accuracy->add_option("--png", accuracy_flags->png_path, "the PNG file to write")
-      ->required()
-      ->check(notEmpty());
-  addSizeFlags(accuracy, *accuracy_flags);
-  accuracy->callback([accuracy_flags] {
-    const ChartFlags& flags = *accuracy_flags;
-    const int status = runReportingErrors("chart bench-accuracy", [&] {
-      checkOutputPath("--png", flags.png_path);  // parents made; no PNG can go there: refused
-      withContext(flags.input, [&] {
-        const std::filesystem::path png(flags.png_path);
-        writeCharts({{png.filename().string(), benchAccuracyChart(flags.input)}},
-                    png.parent_path().string(), flags);
-      });
-    });
-    if (status != 0) throw CLI::RuntimeError(status);
-  });
+  addCsvChartCommand(chart, "bench-cushion",
+                     "From a `baize bench cushion --csv` table write a log-log chart of median time "
+                     "per impact against largest error, one line per solver",
+                     cushionBenchChart);
+  addCsvChartCommand(chart, "bench-accuracy",
+                     "From a `baize bench accuracy --csv` table write a log-log chart of position "
+                     "error against median run time per shot, one line per engine (an error of 0 "
+                     "drawn on a floor)",
+                     benchAccuracyChart);
 }
 
 }  // namespace baize::tools

@@ -16,13 +16,6 @@ namespace {
 // above the solvers' round-off and far below the slips of a slipping contact (0.1 m/s and more).
 constexpr double kStuckSlipMps = 1e-6;
 
-// A short number for a series name ("0.5", "-2"): the curves' values are round by design.
-std::string shortNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 struct ReboundFamily {
   const char* figure;        // "fig6": the CSV and the charts' file name stem
   const char* curve_column;  // the column that tells the curves apart

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +19,13 @@ struct LabelledPoint {
 
 // name -> points, in the order the names first appeared.
 using LabelledGroups = std::vector<std::pair<std::string, std::vector<LabelledPoint>>>;
+
+// A short number for a label or a series name ("0.5", "-2", "1e-09"): printf's %g.
+inline std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 // One line-and-markers series per group, its points sorted by x (stable: ties keep table order).
 inline std::vector<render::ChartSeries> seriesSortedByX(LabelledGroups groups) {
