@@ -101,33 +101,49 @@ struct RandomShotsTiming {
   double one_core_total_s = 0;  // all the shots on one core
 };
 
-// Each shot once per pass (its first run: as a user runs it), one core first, then with the
-// worker if there is one.
-RandomShotsTiming timeShots(const std::vector<engine::Scene>& shots,
-                            engine::CushionImpactWorker* worker, WorkerTally* tally,
-                            const char* progress_label) {
-  std::vector<double> one, two, events;
-  RandomShotsTiming timing;
-  Progress progress(progress_label, static_cast<long>(shots.size()) * (worker ? 2 : 1));
-  for (const engine::Scene& s : shots) {
-    progress.advance();
-    std::size_t count = 0;
-    const double us = timedRun(s, nullptr, &count, tally);
-    one.push_back(us);
-    timing.one_core_total_s += us * 1e-6;
-    events.push_back(static_cast<double>(count));
-  }
-  if (worker) {
-    for (const engine::Scene& s : shots) {
+// Each shot once per pass, with the full model and with the simple rule side by side (in
+// alternating order, so that both see the same machine: timed as two passes one after the other,
+// their ratio moved by a quarter from run to run), one core first, then with the worker if there
+// is one.
+struct ShotPairTiming {
+  RandomShotsTiming full, simple;
+};
+
+ShotPairTiming timeShotPairs(const std::vector<engine::Scene>& full_shots,
+                             const std::vector<engine::Scene>& simple_shots,
+                             engine::CushionImpactWorker* worker, WorkerTally* tally) {
+  std::vector<double> one[2], two[2], events[2];
+  RandomShotsTiming* timing[2];
+  ShotPairTiming result;
+  timing[0] = &result.full;
+  timing[1] = &result.simple;
+  const std::vector<engine::Scene>* shots[2] = {&full_shots, &simple_shots};
+  const long passes = worker ? 2 : 1;
+  Progress progress("random shots timed, full model and simple rule",
+                    static_cast<long>(full_shots.size()) * passes);
+  for (long pass = 0; pass < passes; ++pass) {
+    engine::CushionImpactWorker* const second = pass == 0 ? nullptr : worker;
+    for (std::size_t i = 0; i < full_shots.size(); ++i) {
       progress.advance();
-      std::size_t count = 0;
-      two.push_back(timedRun(s, worker, &count, tally));
+      for (const int m : {static_cast<int>(i % 2), static_cast<int>(1 - i % 2)}) {
+        std::size_t count = 0;
+        const double us = timedRun((*shots[m])[i], second, &count, tally);
+        if (second) {
+          two[m].push_back(us);
+          continue;
+        }
+        one[m].push_back(us);
+        timing[m]->one_core_total_s += us * 1e-6;
+        events[m].push_back(static_cast<double>(count));
+      }
     }
   }
-  timing.one_core_us = median(one);
-  timing.two_core_wall_us = two.empty() ? NAN : median(two);
-  timing.events = median(events);
-  return timing;
+  for (int m = 0; m < 2; ++m) {
+    timing[m]->one_core_us = median(one[m]);
+    timing[m]->two_core_wall_us = two[m].empty() ? NAN : median(two[m]);
+    timing[m]->events = median(events[m]);
+  }
+  return result;
 }
 
 void runBenchShots(const BenchShotsFlags& flags) {
@@ -203,8 +219,8 @@ void runBenchShots(const BenchShotsFlags& flags) {
   for (const engine::Scene& s : shots) engine::runScene(s);
   const double warm_up_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
-  const RandomShotsTiming full = timeShots(shots, second, &tally, "random shots timed");
-  const RandomShotsTiming simple = timeShots(simple_shots, second, &tally, "random shots with the simple rule timed");
+  const ShotPairTiming timed = timeShotPairs(shots, simple_shots, second, &tally);
+  const RandomShotsTiming &full = timed.full, &simple = timed.simple;
   table << "random-single-shots," << std::setprecision(4) << full.one_core_us << ','
         << full.two_core_wall_us << ',' << full.events << row_end;
   table << "random-single-shots-simple," << std::setprecision(4) << simple.one_core_us << ','
