@@ -32,8 +32,9 @@ const std::vector<std::string>& exactSolverKeys() {
   return keys;
 }
 
-physics::ExactSolverOptions readExactSolverOptions(const JsonReader* parameters) {
-  physics::ExactSolverOptions solver;
+physics::ExactSolverOptions readExactSolverOptions(const JsonReader* parameters,
+                                                   physics::ExactSolverOptions defaults) {
+  physics::ExactSolverOptions solver = defaults;
   if (parameters && parameters->has("tolerance"))
     solver.tolerance = parameters->finiteNumber("tolerance");
   return solver;

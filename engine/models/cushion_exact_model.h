@@ -33,8 +33,10 @@ class ExactCushionModel : public CushionContactModel {
 // The registration: keys restitution, friction, contact_height_m, tolerance (the solver's).
 ModelEntry<CushionContactModel> exactCushionModel();
 
-// The keys of the models solved by the exact solver, and their reading into one of them.
+// The keys of the models solved by the exact solver, and their reading into one of them (from
+// `defaults` where a key is not given).
 const std::vector<std::string>& exactSolverKeys();
-physics::ExactSolverOptions readExactSolverOptions(const JsonReader* parameters);
+physics::ExactSolverOptions readExactSolverOptions(const JsonReader* parameters,
+                                                   physics::ExactSolverOptions defaults = {});
 
 }  // namespace baize::engine

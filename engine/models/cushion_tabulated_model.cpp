@@ -14,7 +14,8 @@ ModelEntry<CushionContactModel> tabulatedCushionModel() {
   return {"tabulated", exactSolverKeys(),
           [](const ModelDefaults& defaults, const JsonReader* parameters) {
             return std::make_shared<const TabulatedCushionModel>(
-                readMathavan2010(defaults, parameters), readExactSolverOptions(parameters));
+                readMathavan2010(defaults, parameters),
+                readExactSolverOptions(parameters, physics::tabulatedFallbackOptions()));
           }};
 }
 

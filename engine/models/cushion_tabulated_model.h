@@ -1,7 +1,7 @@
-// Cushion model "tabulated", the default: the Mathavan 2010 model as "exact" solves it, with the
-// impacts of rolling balls answered from the parameter set's table of exact solutions
-// (physics/cushion_rolling_surface.h; within 1e-8 V0 of the exact solver) and every other impact
-// solved by the exact solver.
+// Cushion model "tabulated", the default: the Mathavan 2010 model, with the impacts of rolling
+// balls answered from the parameter set's table of exact solutions
+// (physics/cushion_rolling_surface.h) and every other impact solved by the exact solver at
+// physics::kTabulatedFallbackTolerance, all within 1e-8 V0 of the converged solution.
 #pragma once
 
 #include "engine/models/cushion_exact_model.h"
@@ -18,7 +18,7 @@ class TabulatedCushionModel final : public ExactCushionModel {
 };
 
 // The registration: the keys of "exact"; tolerance is the exact solver's, for the impacts the
-// table does not answer.
+// table does not answer (default physics::kTabulatedFallbackTolerance).
 ModelEntry<CushionContactModel> tabulatedCushionModel();
 
 }  // namespace baize::engine

@@ -18,6 +18,8 @@
 #include "engine/baselines/fixed_step_simulator.h"
 #include "engine/io/scene.h"
 #include "engine/play/random_shots.h"
+#include "physics/cushion_exact_solver.h"
+#include "physics/cushion_tabulated_solver.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/progress.h"
@@ -56,6 +58,22 @@ struct Shot {
   bool frozen_rack = false;  // a break: racked balls touching up to engine::kFrozenGap_m
 };
 
+// The default tolerance of the exact solver in cushion model "exact" or "tabulated".
+double defaultCushionTolerance(const std::string& model) {
+  return model == "tabulated" ? physics::kTabulatedFallbackTolerance
+                              : physics::ExactSolverOptions{}.tolerance;
+}
+
+// `cushion` ("exact" or "tabulated") as model `to`: a tolerance at its own model's default becomes
+// the other's default, one the scene set is kept.
+std::shared_ptr<const engine::CushionContactModel> cushionModelAs(
+    const engine::CushionContactModel& cushion, const std::string& to) {
+  nlohmann::json changes = {{"model", to}};
+  if (cushion.parametersJson().value("tolerance", 0.0) == defaultCushionTolerance(cushion.name()))
+    changes["tolerance"] = defaultCushionTolerance(to);
+  return engine::cushionModels().changed(cushion, changes, "bench accuracy");
+}
+
 // The balls of a scene just after the cue strike, as engine::runScene sets them up.
 Shot shotFromScene(const engine::Scene& scene, const std::string& name) {
   Shot shot;
@@ -64,8 +82,7 @@ Shot shotFromScene(const engine::Scene& scene, const std::string& name) {
   // The reference and the tolerance rows solve every impact exactly; the "tabulated" row puts the
   // table back.
   if (std::string(shot.params.cushion->name()) == "tabulated")
-    shot.params.cushion =
-        engine::cushionModels().changed(*shot.params.cushion, {{"model", "exact"}}, "bench accuracy");
+    shot.params.cushion = cushionModelAs(*shot.params.cushion, "exact");
   shot.table = engine::geometryOf(scene.table);
   physics::CueStrikeParams cue;
   cue.ball_mass_kg = scene.ball_set.mass_kg;
@@ -249,8 +266,7 @@ std::vector<Configuration> configurations() {
   list.push_back({"event", "tabulated", [](const Shot& s) {
                     engine::SimulationParams params = s.params;
                     if (std::string(params.cushion->name()) == "exact")
-                      params.cushion = engine::cushionModels().changed(
-                          *params.cushion, {{"model", "tabulated"}}, "bench accuracy");
+                      params.cushion = cushionModelAs(*params.cushion, "tabulated");
                     return engine::simulate(params, s.table, s.balls);
                   }});
   const std::pair<double, const char*> fixed[] = {

@@ -116,7 +116,8 @@ void printPromise(const BenchRow& exact, int impacts) {
 void printTabulatedPromise(const BenchRow& tabulated, std::size_t impacts) {
   const bool kept = tabulated.max_error <= kTabulatedPromise;
   std::cout << "tabulated default (the default path): " << tabulated.table_answers << " of "
-            << impacts << " impacts answered from the table, the rest solved exactly";
+            << impacts << " impacts answered from the table, the rest solved exactly at tolerance "
+            << tabulated.setting.exact_tolerance;
   const std::size_t solved = impacts - static_cast<std::size_t>(tabulated.table_answers);
   if (solved > 0) {  // their cost: the table's answers take no rate evaluations
     std::cout << " (" << std::setprecision(4)

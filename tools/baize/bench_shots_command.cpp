@@ -101,14 +101,14 @@ struct RandomShotsTiming {
   double one_core_total_s = 0;  // all the shots on one core
 };
 
-// Each shot once per pass, with the full model and with the simple rule side by side (in
-// alternating order, so that both see the same machine: timed as two passes one after the other,
-// their ratio moved by a quarter from run to run), one core first, then with the worker if there
-// is one.
 struct ShotPairTiming {
   RandomShotsTiming full, simple;
 };
 
+// Each shot once per pass, with the full model and with the simple rule side by side (in
+// alternating order, so that both see the same machine: timed as two passes one after the other,
+// their ratio moved by a quarter from run to run), one core first, then with the worker if there
+// is one.
 ShotPairTiming timeShotPairs(const std::vector<engine::Scene>& full_shots,
                              const std::vector<engine::Scene>& simple_shots,
                              engine::CushionImpactWorker* worker, WorkerTally* tally) {

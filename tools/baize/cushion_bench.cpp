@@ -171,9 +171,7 @@ std::vector<SolverSetting> benchSettings() {
     settings.push_back(paper);
   }
   settings.push_back(SolverSetting{});  // the exact solver at its default tolerance
-  SolverSetting tabulated;  // the default path: rolling balls from the table
-  tabulated.kind = SolverKind::Tabulated;
-  settings.push_back(tabulated);
+  settings.push_back(tabulatedDefault());  // the default path: rolling balls from the table
   for (double tolerance : {1e-6, 1e-8, 1e-10, 1e-12}) {
     SolverSetting exact;
     exact.exact_tolerance = tolerance;
@@ -248,8 +246,7 @@ PromiseReport scorePromise(const physics::CushionParams& params,
                            const std::vector<BenchInput>& inputs) {
   PromiseReport report;
   const SolverSetting exact_default;
-  SolverSetting tabulated;
-  tabulated.kind = SolverKind::Tabulated;
+  const SolverSetting tabulated = tabulatedDefault();
   report.tabulated.setting = tabulated;
   std::vector<double> tabulated_errors;
   for (std::size_t i = 0; i < inputs.size(); ++i) {

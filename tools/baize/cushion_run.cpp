@@ -23,9 +23,21 @@ std::string solverName(SolverKind kind) {
   return "unknown";
 }
 
+double defaultTolerance(SolverKind kind) {
+  return kind == SolverKind::Tabulated ? physics::kTabulatedFallbackTolerance
+                                       : physics::ExactSolverOptions{}.tolerance;
+}
+
+SolverSetting tabulatedDefault() {
+  SolverSetting setting;
+  setting.kind = SolverKind::Tabulated;
+  setting.exact_tolerance = defaultTolerance(SolverKind::Tabulated);
+  return setting;
+}
+
 std::string settingLabel(const SolverSetting& setting) {
   if (setting.kind == SolverKind::Paper) return "N=" + std::to_string(setting.paper_steps);
-  if (setting.exact_tolerance == physics::ExactSolverOptions{}.tolerance) return "default";
+  if (setting.exact_tolerance == defaultTolerance(setting.kind)) return "default";
   std::ostringstream label;
   label << "tol=" << setting.exact_tolerance;
   return label.str();

@@ -19,8 +19,16 @@ enum class SolverKind { Paper, Exact, Tabulated };
 struct SolverSetting {
   SolverKind kind = SolverKind::Exact;
   int paper_steps = physics::PaperSolverOptions{}.steps;             // N, paper solver only
-  double exact_tolerance = physics::ExactSolverOptions{}.tolerance;  // exact solver only
+  // The exact solver's tolerance (for Tabulated, that of the impacts the table leaves: make a
+  // default Tabulated setting with tabulatedDefault()).
+  double exact_tolerance = physics::ExactSolverOptions{}.tolerance;
 };
+
+// The exact solver's default tolerance on that path: its own for Exact, the table's fallback
+// tolerance (physics/cushion_tabulated_solver.h) for Tabulated.
+double defaultTolerance(SolverKind kind);
+// The default path as it runs in a shot: the table, and the exact solver at its default there.
+SolverSetting tabulatedDefault();
 
 // "paper", "exact" or "tabulated".
 std::string solverName(SolverKind kind);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/models/model_registry.h"
+#include "physics/cushion_tabulated_solver.h"
 #include "tests/engine/models/model_test_support.h"
 
 namespace baize::engine {
@@ -26,6 +27,27 @@ TEST(CushionTabulatedModel, IsTheDefaultAndEchoesItsParameters) {
   EXPECT_EQ(cushionModel(model->parametersJson())->parametersJson(), model->parametersJson())
       << "reads back";
   EXPECT_TRUE(model->worthSolvingAhead());
+}
+
+// The impacts the table leaves are solved at the path's own tolerance unless the scene sets one.
+TEST(CushionTabulatedModel, SolvesWhatItsTableLeavesAtItsOwnToleranceUnlessGivenOne) {
+  EXPECT_EQ(cushionModel(nlohmann::json::object())->parametersJson()["tolerance"],
+            physics::kTabulatedFallbackTolerance);
+  EXPECT_GT(physics::kTabulatedFallbackTolerance, physics::ExactSolverOptions{}.tolerance);
+  EXPECT_EQ(cushionModel({{"model", "exact"}})->parametersJson()["tolerance"],
+            physics::ExactSolverOptions{}.tolerance);
+  EXPECT_EQ(cushionModel({{"tolerance", 1e-12}})->parametersJson()["tolerance"], 1e-12);
+  // A sliding ball (no table answer) gets the exact model's answer at the same tolerance.
+  SimulationParams tabulated = poolSimulationParams(), exact = poolSimulationParams();
+  exact.cushion =
+      cushionModel({{"model", "exact"}, {"tolerance", physics::kTabulatedFallbackTolerance}});
+  const double speed = 1.2;
+  const physics::BallVelocity sliding =
+      physics::incomingBall(speed, 0.9, 0, 0.2 * speed / tabulated.ball.radius_m);
+  const physics::BallVelocity a = tabulated.cushion->resolve(tabulated, sliding);
+  const physics::BallVelocity b = exact.cushion->resolve(exact, sliding);
+  EXPECT_EQ(a.v, b.v);
+  EXPECT_EQ(a.w, b.w);
 }
 
 TEST(CushionTabulatedModel, OverriddenParametersGiveTheExactModelsAnswers) {
