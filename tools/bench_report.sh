@@ -39,10 +39,11 @@ fi
 if [[ $quick -eq 1 ]]; then
   shots_flags=(--repeat 1 --random-shots 30) accuracy_flags=(--shots 2 --repeat 1)
   cushion_flags=(--impacts 30 --repeat 1) render_flags=(--repeat 1 --width 320 --height 160)
+  set_flags=(--impacts 30)
   pool_play_flags=(--racks 2 --noise 1) snooker_play_flags=(--racks 1 --noise 1)
 else
   shots_flags=(--repeat 21 --random-shots 3000) accuracy_flags=()
-  cushion_flags=() render_flags=()
+  cushion_flags=() render_flags=() set_flags=()
   pool_play_flags=(--racks 200 --noise 0.5,1,2) snooker_play_flags=(--racks 20 --noise 0.5,1)
 fi
 
@@ -61,6 +62,10 @@ break_flags=()
 [[ $quick -eq 1 ]] && break_flags=(--repeat 1)
 "$baize" bench cushion --from-scene assets/scenes/9-ball-break.json "${break_flags[@]}" \
   --csv "$work/cushion-break.csv" > "$work/cushion-break.txt"
+progress "the spinning and grippy sets"
+for set in spinning grippy; do
+  "$baize" bench cushion --set "$set" "${set_flags[@]}" > "$work/cushion-$set.txt"
+done
 progress "Python package"
 python_bench=(/usr/bin/python3 tools/bench_python.py --baize "$baize")
 [[ $quick -eq 1 ]] && python_bench+=(--quick)
@@ -152,6 +157,14 @@ doc = [
     table(f"{work}/cushion-break.csv"),
     "",
 ] + [f"    {l}" for l in text(f"{work}/cushion-break.txt")
+     if l.startswith(("baize bench cushion:", "exact default:", "tabulated default"))] + [
+    "",
+    "### Spin about every axis, grippy cushions (`--set spinning`, `--set grippy`)",
+    "",
+    "The promises on impacts the table cannot answer: the exact solver at its default, and the",
+    "default path at its own tolerance, against the converged reference (not timed).",
+    "",
+] + [f"    {l}" for s in ("spinning", "grippy") for l in text(f"{work}/cushion-{s}.txt")
      if l.startswith(("baize bench cushion:", "exact default:", "tabulated default"))] + [
     "",
     "## Rendering (`baize bench render`)",
