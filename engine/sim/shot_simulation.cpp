@@ -433,8 +433,10 @@ void ShotSimulation::predictOwn(int i) {
 }
 
 // The cushions whose box the ball's reaches are solved nearest first (by a rough estimate of when
-// the gap closes): a cushion whose gap stays open until the best event found so far cannot be the
-// ball's first and is skipped unsolved. Only the order of the work changes, not what is found.
+// the gap closes): a cushion whose gap stays open until the best event found so far, or whose box
+// the ball's box until then does not reach, cannot be the ball's first and is skipped unsolved
+// (the box check drops the cushion on the same line as the one just hit, beyond a pocket). Only
+// the order of the work changes, not what is found.
 void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* best_own) {
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
@@ -455,8 +457,9 @@ void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* bes
               return a.rough_time_s < b.rough_time_s ||
                      (a.rough_time_s == b.rough_time_s && a.cushion < b.cushion);
             });
+  Box reach = b.box;  // swept until the best event found so far
   for (const CushionGap& g : cushion_gaps_) {
-    if (quadraticStaysAbove(g.gap, best_own->dt_s)) {
+    if (quadraticStaysAbove(g.gap, best_own->dt_s) || !reach.overlaps(cushion_boxes_[g.cushion])) {
       ++result_.skipped_predictions;
       continue;
     }
@@ -466,8 +469,10 @@ void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* bes
     const Eigen::Vector2d along = c.end_m - c.start_m;
     const double s = (path.at(hit.time) - c.start_m).dot(along) / along.squaredNorm();
     const PredictedEvent candidate{hit.time, EventKind::Cushion, i, -1, g.cushion};
-    if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < *best_own)
+    if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < *best_own) {
       *best_own = candidate;
+      reach = sweptBox(path, best_own->dt_s, R_);
+    }
   }
   *horizon = best_own->dt_s;
   b.box = sweptBox(path, *horizon, R_);
