@@ -57,7 +57,8 @@ Polynomial makePolynomial(const std::array<double, 5>& c) {
 
 Polynomial derivative(const Polynomial& p) {
   Polynomial d;
-  for (int i = 1; i <= p.degree; ++i) d.c[i - 1] = i * p.c[i];
+  static constexpr double kPower[5] = {0, 1, 2, 3, 4};  // i as a double: read, not converted
+  for (int i = 1; i <= p.degree; ++i) d.c[i - 1] = kPower[i] * p.c[i];
   d.degree = p.degree >= 1 ? p.degree - 1 : -1;  // i * c_i is never 0 when c_i is not
   return d;
 }
