@@ -38,6 +38,23 @@ double roughClosingTime(const PolynomialCoefficients& gap) {
   return first >= 0 ? first : (second >= 0 ? second : kInfinity);
 }
 
+// Calls visit(k) for each of `boxes` that `reach` overlaps and returns how many it does not (those
+// are skipped unsolved). One tight loop over the boxes: a ball's own events look at every cushion,
+// jaw and pocket of the table at each of its events, and most are far.
+template <class Visit>
+long visitOverlapping(const std::vector<Box>& boxes, const Box& reach, Visit visit) {
+  const Box* const box = boxes.data();
+  const int count = static_cast<int>(boxes.size());
+  long missed = 0;
+  for (int k = 0; k < count; ++k) {
+    if (reach.overlaps(box[k]))
+      visit(k);
+    else
+      ++missed;
+  }
+  return missed;
+}
+
 }  // namespace
 
 ShotSimulation::ShotSimulation(const SimulationParams& params, const TableGeometry& table,
@@ -433,30 +450,29 @@ void ShotSimulation::predictOwn(int i) {
 }
 
 // The cushions whose box the ball's reaches are solved nearest first (by a rough estimate of when
-// the gap closes): a cushion whose gap stays open until the best event found so far cannot be the
-// ball's first and is skipped unsolved. Only the order of the work changes, not what is found.
+// the gap closes): a cushion whose gap stays open until the best event found so far, or whose box
+// the ball's box until then does not reach, cannot be the ball's first and is skipped unsolved
+// (the box check drops the cushion on the same line as the one just hit, beyond a pocket). Only
+// the order of the work changes, not what is found.
 void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* best_own) {
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
   cushion_gaps_.clear();
-  for (int k = 0; k < static_cast<int>(table_.cushions.size()); ++k) {
-    if (!b.box.overlaps(cushion_boxes_[k])) {
-      ++result_.skipped_predictions;
-      continue;
-    }
+  result_.skipped_predictions += visitOverlapping(cushion_boxes_, b.box, [&](int k) {
     const CushionSegment& c = table_.cushions[k];
     const PolynomialCoefficients gap = {c.inward_normal.dot(path.constant_m - c.start_m) - R_,
                                         c.inward_normal.dot(path.linear_mps),
                                         c.inward_normal.dot(path.quadratic_mps2), 0, 0};
     cushion_gaps_.push_back({roughClosingTime(gap), k, gap});
-  }
+  });
   std::sort(cushion_gaps_.begin(), cushion_gaps_.end(),
             [](const CushionGap& a, const CushionGap& b) {
               return a.rough_time_s < b.rough_time_s ||
                      (a.rough_time_s == b.rough_time_s && a.cushion < b.cushion);
             });
+  Box reach = b.box;  // swept until the best event found so far
   for (const CushionGap& g : cushion_gaps_) {
-    if (quadraticStaysAbove(g.gap, best_own->dt_s)) {
+    if (quadraticStaysAbove(g.gap, best_own->dt_s) || !reach.overlaps(cushion_boxes_[g.cushion])) {
       ++result_.skipped_predictions;
       continue;
     }
@@ -466,8 +482,10 @@ void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* bes
     const Eigen::Vector2d along = c.end_m - c.start_m;
     const double s = (path.at(hit.time) - c.start_m).dot(along) / along.squaredNorm();
     const PredictedEvent candidate{hit.time, EventKind::Cushion, i, -1, g.cushion};
-    if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < *best_own)
+    if (s >= 0 && s <= 1 && absolute(candidate).dt_s < kInfinity && candidate < *best_own) {
       *best_own = candidate;
+      reach = sweptBox(path, best_own->dt_s, R_);
+    }
   }
   *horizon = best_own->dt_s;
   b.box = sweptBox(path, *horizon, R_);
@@ -476,16 +494,12 @@ void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* bes
 void ShotSimulation::predictJaws(int i, double* horizon, PredictedEvent* best_own) {
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
-  for (int k = 0; k < static_cast<int>(table_.jaws.size()); ++k) {
-    if (!b.box.overlaps(jaw_boxes_[k])) {
-      ++result_.skipped_predictions;
-      continue;
-    }
+  result_.skipped_predictions += visitOverlapping(jaw_boxes_, b.box, [&](int k) {
     const JawArc& jaw = table_.jaws[k];
     if (staysFarther(path.constant_m - jaw.centre_m, path.linear_mps, path.quadratic_mps2,
                      jaw.radius_m + R_, best_own->dt_s)) {  // not before the best so far
       ++result_.skipped_predictions;
-      continue;
+      return;
     }
     const PolynomialCoefficients gap = squaredGap(path, jaw.centre_m, Eigen::Vector2d::Zero(),
                                                   Eigen::Vector2d::Zero(), jaw.radius_m + R_);
@@ -495,7 +509,7 @@ void ShotSimulation::predictJaws(int i, double* horizon, PredictedEvent* best_ow
         absolute(candidate).dt_s < kInfinity && candidate < *best_own) {
       *best_own = candidate;
     }
-  }
+  });
   *horizon = best_own->dt_s;
   b.box = sweptBox(path, *horizon, R_);
 }
@@ -503,23 +517,19 @@ void ShotSimulation::predictJaws(int i, double* horizon, PredictedEvent* best_ow
 void ShotSimulation::predictPockets(int i, double* horizon, PredictedEvent* best_own) {
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
-  for (int k = 0; k < static_cast<int>(table_.pockets.size()); ++k) {
-    if (!b.box.overlaps(pocket_boxes_[k])) {
-      ++result_.skipped_predictions;
-      continue;
-    }
+  result_.skipped_predictions += visitOverlapping(pocket_boxes_, b.box, [&](int k) {
     const Circle& pocket = table_.pockets[k];
     if (staysFarther(path.constant_m - pocket.centre_m, path.linear_mps, path.quadratic_mps2,
                      pocket.radius_m, best_own->dt_s)) {  // not before the best so far
       ++result_.skipped_predictions;
-      continue;
+      return;
     }
     const PolynomialCoefficients gap = squaredGap(path, pocket.centre_m, Eigen::Vector2d::Zero(),
                                                   Eigen::Vector2d::Zero(), pocket.radius_m);
     const physics::RootSearchResult hit = solveGap(gap, *horizon);
     const PredictedEvent candidate{hit.time, EventKind::Pocket, i, -1, k};
     if (hit.outcome == physics::RootOutcome::Root && candidate < *best_own) *best_own = candidate;
-  }
+  });
   *horizon = best_own->dt_s;
   b.box = sweptBox(path, *horizon, R_);
 }
