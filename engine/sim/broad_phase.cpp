@@ -16,6 +16,11 @@ constexpr double kBernsteinMarginRoundoffs = 64;
 // resolves are left to the root finder.
 constexpr int kBernsteinMaxHalvings = 3;
 
+// opensThroughout(): the gap's computed value at the horizon must exceed this many times its own
+// rounding error bound (the root finder's, kPolynomialErrorUnitRoundoffs unit roundoffs of its
+// terms), so that the root finder, evaluating the same value, sees it clearly positive too.
+constexpr double kOpeningEndMarginBounds = 4;
+
 using Bernstein = std::array<double, 5>;
 
 bool allAbove(const Bernstein& b, double margin) {
@@ -55,6 +60,16 @@ bool bernsteinStaysPositive(const physics::PolynomialCoefficients& p, double hor
                        a[0] + 3 * a[1] / 4 + a[2] / 2 + a[3] / 4, a[0] + a[1] + a[2] + a[3] + a[4]};
   return pieceStaysAbove(b, kBernsteinMarginRoundoffs * 0x1p-53 * magnitude,
                          kBernsteinMaxHalvings);
+}
+
+bool opensThroughout(const physics::PolynomialCoefficients& p, double horizon) {
+  if (!(horizon > 0) || !std::isfinite(horizon)) return false;
+  // The derivative's coefficients as the root finder forms them (k c_k; its scaling of p by a power
+  // of two is exact), proved positive with the same margin over its rounding band as a gap.
+  const physics::PolynomialCoefficients slope = {p[1], 2 * p[2], 3 * p[3], 4 * p[4], 0};
+  if (!bernsteinStaysPositive(slope, horizon)) return false;
+  const physics::PolynomialValue end = physics::evaluatePolynomialWithErrorBound(p, horizon);
+  return end.value > kOpeningEndMarginBounds * end.error_bound;
 }
 
 RestingGrid::RestingGrid(const std::vector<int>& indices,

@@ -71,6 +71,12 @@ inline bool staysFarther(const Eigen::Vector2d& c, const Eigen::Vector2d& l,
 // coefficient is not, up to kBernsteinMaxHalvings times.
 bool bernsteinStaysPositive(const physics::PolynomialCoefficients& p, double horizon);
 
+// Whether gap polynomial p only opens over [0, horizon] (finite): its derivative stays positive
+// there by its Bernstein coefficients, and p ends clearly positive. The root finder then finds no
+// critical point inside and no closing root, whatever p is at the start (a contact that was just
+// resolved and separates: p starts within rounding of zero, so staysApart() cannot say).
+bool opensThroughout(const physics::PolynomialCoefficients& p, double horizon);
+
 // Whether gap polynomial p stays positive on [0, horizon], so that the root finder need not run: a
 // quadratic (a straight cushion) by its lowest value there, exactly; a quartic by the bound
 // p(t) >= c0 - sum |c_k| T^k, then by its Bernstein coefficients.

@@ -383,11 +383,12 @@ PredictedEvent ShotSimulation::earliest() const {
   return best;
 }
 
-// The first closing root of a gap polynomial in [0, horizon]; a gap the cheap bound shows to stay
-// open is counted as skipped instead of solved.
+// The first closing root of a gap polynomial in [0, horizon]; a gap the cheap bounds show to stay
+// open, or (touching now: a contact just resolved) to open throughout, is counted as skipped
+// instead of solved.
 physics::RootSearchResult ShotSimulation::solveGap(const PolynomialCoefficients& gap,
                                                    double horizon) {
-  if (staysApart(gap, horizon)) {
+  if (staysApart(gap, horizon) || (!(gap[0] > 0) && opensThroughout(gap, horizon))) {
     ++result_.skipped_predictions;
     return physics::RootSearchResult{};
   }

@@ -98,6 +98,35 @@ TEST(BroadPhase, BernsteinCoefficientsShowAWidePassStaysOpen) {
   EXPECT_FALSE(staysApart(overlapping, horizon));
 }
 
+// A contact just resolved: the gap starts at zero (within rounding). Where opensThroughout() says it
+// only opens, the root finder finds no closing root either; a gap that closes at the start, or turns
+// back and closes within the horizon, is never claimed.
+TEST(BroadPhase, AGapSaidToOpenThroughoutHasNoClosingRoot) {
+  Draw draw;
+  int opening = 0, closing = 0;
+  for (int k = 0; k < 4000; ++k) {
+    physics::PositionQuadratic path = draw.path();
+    const double distance = draw.uniform(0.02, 0.3), horizon = draw.uniform(0.01, 2);
+    const double angle = draw.uniform(0, 2 * M_PI);
+    path.constant_m = distance * Vector2d(std::cos(angle), std::sin(angle));  // touching
+    physics::PolynomialCoefficients gap =
+        squaredGap(path, Vector2d::Zero(), Vector2d::Zero(), Vector2d::Zero(), distance);
+    if (k % 2) gap = {gap[0], gap[1], gap[2], 0, 0};  // a straight cushion's kind of gap
+    const bool opens = opensThroughout(gap, horizon);
+    const physics::RootSearchResult hit = physics::firstClosingRoot(gap, 0, horizon);
+    if (opens) {
+      ++opening;
+      EXPECT_EQ(hit.outcome, physics::RootOutcome::NoRoot) << "draw " << k;
+    }
+    closing += hit.outcome == physics::RootOutcome::Root;
+  }
+  EXPECT_GT(opening, 500);  // separating contacts are common
+  EXPECT_GT(closing, 500);  // and so are closing ones, never claimed
+  const physics::PolynomialCoefficients turns_back = {0, 1, -4, 0, 0};  // opens, closes at 0.25
+  EXPECT_FALSE(opensThroughout(turns_back, 1));
+  EXPECT_TRUE(opensThroughout(turns_back, 0.1));
+}
+
 // The gap polynomial is |c + l t + q t^2 - centre|^2 - d^2, coefficient by coefficient.
 TEST(BroadPhase, TheSquaredGapIsTheDistancePolynomial) {
   Draw draw;
