@@ -1465,7 +1465,9 @@ std::array<int, 2> expectLogMatchesReference(const CushionParams& p, const BallV
     });
     EXPECT_NE(match, listed.end()) << names[stick.contact] << " sticks from P = " << stick.from_Ns
                                    << " N s (to " << stick.to_Ns << "), not listed from there";
-    if (match != listed.end()) EXPECT_LE(match->to_Ns, stick.to_Ns + agreement);
+    if (match != listed.end()) {
+      EXPECT_LE(match->to_Ns, stick.to_Ns + agreement);
+    }
   }
   for (const test::ReferenceStick& stick : listed) {
     if (stick.to_Ns - stick.from_Ns < shortest) continue;

@@ -187,7 +187,7 @@ TEST(CushionCalibration, ThePapersSnookerDataAgreeWithItsValues) {
 TEST(CushionCalibration, PoolTablesCarryTheValueFittedToThePoolFigures) {
   const auto data =
       readCushionMeasurements(assetsDirectory() + "/measurements/pool-rail-figures.csv");
-  for (const std::string& name : {"pool-7ft", "pool-8ft", "pool-9ft"}) {
+  for (const char* name : {"pool-7ft", "pool-8ft", "pool-9ft"}) {
     const Table table = builtinTable(name);
     CushionCalibrationSetup setup;
     setup.start = calibrationStart(table, builtinBallSet("pool"));

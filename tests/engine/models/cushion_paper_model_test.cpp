@@ -101,7 +101,9 @@ TEST(CushionPaperModel, AnImpactThatGainsEnergyFailsTheShot) {
 TEST(CushionPaperModel, AStepCountBelowOneIsRefusedNamingTheValue) {
   SimulationParams p = poolSimulationParams();
   const std::vector<BallState> ball = {rollingBallAt(0, 0, 1, 0, p.ball.radius_m)};
-  p.cushion = std::make_shared<const PaperCushionModel>(Mathavan2010Cushion{0.036, 0.98, 0.14}, 0);
+  Mathavan2010Cushion cushion;
+  cushion.contact_height_m = 0.036;
+  p.cushion = std::make_shared<const PaperCushionModel>(cushion, 0);
   const std::string steps =
       invalidArgumentMessage([&] { simulate(p, rectangularTable(2, 1), ball); });
   EXPECT_MENTIONS(steps, "paper solver steps = 0 is not allowed");
