@@ -63,10 +63,7 @@ Polynomial derivative(const Polynomial& p) {
   return d;
 }
 
-// Horner's rule, with the running sum of magnitudes sum |c_i| |t|^i for the error bound. The steps
-// are written out per degree (the same operations in the same order as a loop from the top
-// coefficient down): this runs several times per root, and a loop over a degree known only at run
-// time cost a third of the search.
+// Horner's rule, with the running sum of magnitudes sum |c_i| |t|^i for the error bound.
 PolynomialValue evaluate(const Polynomial& p, double t) {
   if (p.degree < 0) return {0.0, kUnderflowFloor};
   double value = p.c[p.degree];

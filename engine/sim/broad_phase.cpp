@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace baize::engine {
 namespace {
@@ -18,8 +19,16 @@ constexpr int kBernsteinMaxHalvings = 3;
 
 // opensThroughout(): the gap's computed value at the horizon must exceed this many times its own
 // rounding error bound (the root finder's, kPolynomialErrorUnitRoundoffs unit roundoffs of its
-// terms), so that the root finder, evaluating the same value, sees it clearly positive too.
+// terms), so that the root finder, evaluating the same polynomial (scaled by a power of two: the
+// same relative rounding), sees it clearly positive too: 4 covers the scaling's and the two
+// evaluations' differences in the order of rounding.
 constexpr double kOpeningEndMarginBounds = 4;
+// ... and at least this share of the largest coefficient's magnitude. The root finder scales the
+// polynomial by 2^-e (e the largest coefficient's exponent) and counts a value within a fixed
+// floor of a few subnormals as zero; a value of at least 2^-900 of the largest coefficient is
+// still at least 2^-901 after scaling, far above that floor (a value near it arises only with a
+// subnormal horizon).
+constexpr double kOpeningEndFloorShare = 0x1p-900;
 
 using Bernstein = std::array<double, 5>;
 
@@ -69,7 +78,10 @@ bool opensThroughout(const physics::PolynomialCoefficients& p, double horizon) {
   const physics::PolynomialCoefficients slope = {p[1], 2 * p[2], 3 * p[3], 4 * p[4], 0};
   if (!bernsteinStaysPositive(slope, horizon)) return false;
   const physics::PolynomialValue end = physics::evaluatePolynomialWithErrorBound(p, horizon);
-  return end.value > kOpeningEndMarginBounds * end.error_bound;
+  double largest = 0;
+  for (double c : p) largest = std::max(largest, std::abs(c));
+  return end.value > kOpeningEndMarginBounds * end.error_bound &&
+         end.value > kOpeningEndFloorShare * largest;
 }
 
 RestingGrid::RestingGrid(const std::vector<int>& indices,

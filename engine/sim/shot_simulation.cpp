@@ -459,13 +459,14 @@ void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* bes
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
   cushion_gaps_.clear();
-  result_.skipped_predictions += visitOverlapping(cushion_boxes_, b.box, [&](int k) {
+  const long boxes_apart = visitOverlapping(cushion_boxes_, b.box, [&](int k) {
     const CushionSegment& c = table_.cushions[k];
     const PolynomialCoefficients gap = {c.inward_normal.dot(path.constant_m - c.start_m) - R_,
                                         c.inward_normal.dot(path.linear_mps),
                                         c.inward_normal.dot(path.quadratic_mps2), 0, 0};
     cushion_gaps_.push_back({roughClosingTime(gap), k, gap});
   });
+  result_.skipped_predictions += boxes_apart;
   std::sort(cushion_gaps_.begin(), cushion_gaps_.end(),
             [](const CushionGap& a, const CushionGap& b) {
               return a.rough_time_s < b.rough_time_s ||
@@ -495,7 +496,7 @@ void ShotSimulation::predictCushions(int i, double* horizon, PredictedEvent* bes
 void ShotSimulation::predictJaws(int i, double* horizon, PredictedEvent* best_own) {
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
-  result_.skipped_predictions += visitOverlapping(jaw_boxes_, b.box, [&](int k) {
+  const long boxes_apart = visitOverlapping(jaw_boxes_, b.box, [&](int k) {
     const JawArc& jaw = table_.jaws[k];
     if (staysFarther(path.constant_m - jaw.centre_m, path.linear_mps, path.quadratic_mps2,
                      jaw.radius_m + R_, best_own->dt_s)) {  // not before the best so far
@@ -511,6 +512,7 @@ void ShotSimulation::predictJaws(int i, double* horizon, PredictedEvent* best_ow
       *best_own = candidate;
     }
   });
+  result_.skipped_predictions += boxes_apart;
   *horizon = best_own->dt_s;
   b.box = sweptBox(path, *horizon, R_);
 }
@@ -518,7 +520,7 @@ void ShotSimulation::predictJaws(int i, double* horizon, PredictedEvent* best_ow
 void ShotSimulation::predictPockets(int i, double* horizon, PredictedEvent* best_own) {
   Track& b = balls_[i];
   const physics::PositionQuadratic& path = b.path;
-  result_.skipped_predictions += visitOverlapping(pocket_boxes_, b.box, [&](int k) {
+  const long boxes_apart = visitOverlapping(pocket_boxes_, b.box, [&](int k) {
     const Circle& pocket = table_.pockets[k];
     if (staysFarther(path.constant_m - pocket.centre_m, path.linear_mps, path.quadratic_mps2,
                      pocket.radius_m, best_own->dt_s)) {  // not before the best so far
@@ -531,6 +533,7 @@ void ShotSimulation::predictPockets(int i, double* horizon, PredictedEvent* best
     const PredictedEvent candidate{hit.time, EventKind::Pocket, i, -1, k};
     if (hit.outcome == physics::RootOutcome::Root && candidate < *best_own) *best_own = candidate;
   });
+  result_.skipped_predictions += boxes_apart;
   *horizon = best_own->dt_s;
   b.box = sweptBox(path, *horizon, R_);
 }

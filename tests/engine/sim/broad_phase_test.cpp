@@ -127,6 +127,27 @@ TEST(BroadPhase, AGapSaidToOpenThroughoutHasNoClosingRoot) {
   EXPECT_TRUE(opensThroughout(turns_back, 0.1));
 }
 
+// Gaps whose slope is positive at both ends and whose value at the horizon is positive, but which
+// close on the way (or touch, or start flat): never claimed, and the root finder finds the close.
+TEST(BroadPhase, AGapOpenAtBothEndsThatClosesOnTheWayIsNotSaidToOpen) {
+  // t (t - 0.4) (t - 0.6): slope 0.24 at 0 and 1.24 at 1, value 0.24 at 1; closes at 0.4.
+  const physics::PolynomialCoefficients dips = {0, 0.24, -1, 1, 0};
+  EXPECT_FALSE(opensThroughout(dips, 1));
+  const physics::RootSearchResult dip = physics::firstClosingRoot(dips, 0, 1);
+  ASSERT_EQ(dip.outcome, physics::RootOutcome::Root);
+  EXPECT_NEAR(dip.time, 0.4, 1e-12);
+  // t (t - 0.5)^2: touches again at 0.5 (a double root).
+  const physics::PolynomialCoefficients touches = {0, 0.25, -1, 1, 0};
+  EXPECT_FALSE(opensThroughout(touches, 1));
+  EXPECT_EQ(physics::firstClosingRoot(touches, 0, 1).outcome, physics::RootOutcome::Root);
+  // Flat at the start: no proof that it opens.
+  EXPECT_FALSE(opensThroughout({0, 0, 1, 0, 0}, 1));
+  // A value at the horizon far below its coefficients' scale (a subnormal horizon) is not trusted:
+  // the root finder, which scales the polynomial first, would read it as zero.
+  EXPECT_FALSE(opensThroughout({0, 1, 0, 0, 0x1p20}, 1e-318));
+  EXPECT_TRUE(opensThroughout({0, 1, 0, 0, 0x1p20}, 1e-3));
+}
+
 // The gap polynomial is |c + l t + q t^2 - centre|^2 - d^2, coefficient by coefficient.
 TEST(BroadPhase, TheSquaredGapIsTheDistancePolynomial) {
   Draw draw;
