@@ -18,8 +18,6 @@
 #include "engine/baselines/fixed_step_simulator.h"
 #include "engine/io/scene.h"
 #include "engine/play/random_shots.h"
-#include "physics/cushion_exact_solver.h"
-#include "physics/cushion_tabulated_solver.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
 #include "tools/baize/progress.h"
@@ -58,10 +56,11 @@ struct Shot {
   bool frozen_rack = false;  // a break: racked balls touching up to engine::kFrozenGap_m
 };
 
-// The default tolerance of the exact solver in cushion model "exact" or "tabulated".
+// The default tolerance of the exact solver in cushion model "exact" or "tabulated", as the
+// model's registration sets it.
 double defaultCushionTolerance(const std::string& model) {
-  return model == "tabulated" ? physics::kTabulatedFallbackTolerance
-                              : physics::ExactSolverOptions{}.tolerance;
+  return engine::cushionModels().make(model, engine::ModelDefaults{})->parametersJson().value(
+      "tolerance", 0.0);
 }
 
 // `cushion` ("exact" or "tabulated") as model `to`: a tolerance at its own model's default becomes
