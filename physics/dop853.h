@@ -101,34 +101,38 @@ struct Stages {
 template <typename Vector, typename Rate>
 Stages<Vector> stages(const Vector& z, const Vector& k1, double h, const Rate& rate) {
   using T = Term<Vector>;
-  const Vector k2 = rate(stageInput<1, Vector>(z, {{T{h * a21, &k1}}}));
-  const Vector k3 = rate(stageInput<2, Vector>(z, {{T{h * a31, &k1}, T{h * a32, &k2}}}));
-  const Vector k4 = rate(stageInput<2, Vector>(z, {{T{h * a41, &k1}, T{h * a43, &k3}}}));
-  const Vector k5 =
-      rate(stageInput<3, Vector>(z, {{T{h * a51, &k1}, T{h * a53, &k3}, T{h * a54, &k4}}}));
-  const Vector k6 =
-      rate(stageInput<3, Vector>(z, {{T{h * a61, &k1}, T{h * a64, &k4}, T{h * a65, &k5}}}));
-  const Vector k7 = rate(stageInput<4, Vector>(
-      z, {{T{h * a71, &k1}, T{h * a74, &k4}, T{h * a75, &k5}, T{h * a76, &k6}}}));
-  const Vector k8 = rate(stageInput<5, Vector>(
-      z, {{T{h * a81, &k1}, T{h * a84, &k4}, T{h * a85, &k5}, T{h * a86, &k6}, T{h * a87, &k7}}}));
-  const Vector k9 =
-      rate(stageInput<6, Vector>(z, {{T{h * a91, &k1}, T{h * a94, &k4}, T{h * a95, &k5},
-                                      T{h * a96, &k6}, T{h * a97, &k7}, T{h * a98, &k8}}}));
-  const Vector k10 = rate(stageInput<7, Vector>(
-      z, {{T{h * a101, &k1}, T{h * a104, &k4}, T{h * a105, &k5}, T{h * a106, &k6}, T{h * a107, &k7},
-           T{h * a108, &k8}, T{h * a109, &k9}}}));
-  const Vector k11 = rate(stageInput<8, Vector>(
-      z, {{T{h * a111, &k1}, T{h * a114, &k4}, T{h * a115, &k5}, T{h * a116, &k6}, T{h * a117, &k7},
-           T{h * a118, &k8}, T{h * a119, &k9}, T{h * a1110, &k10}}}));
-  const Vector k12 = rate(stageInput<9, Vector>(
-      z, {{T{h * a121, &k1}, T{h * a124, &k4}, T{h * a125, &k5}, T{h * a126, &k6}, T{h * a127, &k7},
-           T{h * a128, &k8}, T{h * a129, &k9}, T{h * a1210, &k10}, T{h * a1211, &k11}}}));
-  Stages<Vector> result{{k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12}, {}, {}, {}};
+  // The rates are made in place in the result (not copied into it after).
+  Stages<Vector> result;
+  std::array<Vector, kStages>& k = result.k;
+  k[0] = k1;
+  k[1] = rate(stageInput<1, Vector>(z, {{T{h * a21, &k[0]}}}));
+  k[2] = rate(stageInput<2, Vector>(z, {{T{h * a31, &k[0]}, T{h * a32, &k[1]}}}));
+  k[3] = rate(stageInput<2, Vector>(z, {{T{h * a41, &k[0]}, T{h * a43, &k[2]}}}));
+  k[4] =
+      rate(stageInput<3, Vector>(z, {{T{h * a51, &k[0]}, T{h * a53, &k[2]}, T{h * a54, &k[3]}}}));
+  k[5] =
+      rate(stageInput<3, Vector>(z, {{T{h * a61, &k[0]}, T{h * a64, &k[3]}, T{h * a65, &k[4]}}}));
+  k[6] = rate(stageInput<4, Vector>(
+      z, {{T{h * a71, &k[0]}, T{h * a74, &k[3]}, T{h * a75, &k[4]}, T{h * a76, &k[5]}}}));
+  k[7] = rate(stageInput<5, Vector>(z, {{T{h * a81, &k[0]}, T{h * a84, &k[3]}, T{h * a85, &k[4]},
+                                         T{h * a86, &k[5]}, T{h * a87, &k[6]}}}));
+  k[8] =
+      rate(stageInput<6, Vector>(z, {{T{h * a91, &k[0]}, T{h * a94, &k[3]}, T{h * a95, &k[4]},
+                                      T{h * a96, &k[5]}, T{h * a97, &k[6]}, T{h * a98, &k[7]}}}));
+  k[9] = rate(stageInput<7, Vector>(
+      z, {{T{h * a101, &k[0]}, T{h * a104, &k[3]}, T{h * a105, &k[4]}, T{h * a106, &k[5]},
+           T{h * a107, &k[6]}, T{h * a108, &k[7]}, T{h * a109, &k[8]}}}));
+  k[10] = rate(stageInput<8, Vector>(
+      z, {{T{h * a111, &k[0]}, T{h * a114, &k[3]}, T{h * a115, &k[4]}, T{h * a116, &k[5]},
+           T{h * a117, &k[6]}, T{h * a118, &k[7]}, T{h * a119, &k[8]}, T{h * a1110, &k[9]}}}));
+  k[11] = rate(
+      stageInput<9, Vector>(z, {{T{h * a121, &k[0]}, T{h * a124, &k[3]}, T{h * a125, &k[4]},
+                                 T{h * a126, &k[5]}, T{h * a127, &k[6]}, T{h * a128, &k[7]},
+                                 T{h * a129, &k[8]}, T{h * a1210, &k[9]}, T{h * a1211, &k[10]}}}));
   Vector& slope = result.slope;
   for (int i = 0; i < Vector::RowsAtCompileTime; ++i) {
-    slope[i] = b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] + b10 * k10[i] +
-               b11 * k11[i] + b12 * k12[i];
+    slope[i] = b1 * k[0][i] + b6 * k[5][i] + b7 * k[6][i] + b8 * k[7][i] + b9 * k[8][i] +
+               b10 * k[9][i] + b11 * k[10][i] + b12 * k[11][i];
   }
   result.end = z + h * slope;
   result.rate_at_end = rate(result.end);

@@ -213,6 +213,11 @@ out=$("$baize" bench shots --repeat 1 --random-shots 20 --csv "$work/shots.csv")
 # The full cushion model's time over the simple rule's on the same shots, as the two rows give it.
 ratio=$(grep -oP "^random single shots with the full cushion model / with the simple rule at every cushion: \K[0-9.e+]+(?=x)" <<<"$out") ||
   fail "no ratio line in: $out"
+# The same ratio of the shots' total times, beside it (a positive number).
+total_ratio=$(grep -oP "^random single shots with the full cushion model .* of their total times: \K[0-9.e+]+(?=x)" <<<"$out") ||
+  fail "no ratio of total times in: $out"
+python3 -c "import sys; assert float(sys.argv[1]) > 0, sys.argv[1]" "$total_ratio" ||
+  fail "ratio of total times not a positive number: $total_ratio"
 python3 - "$work/shots.csv" "$root/assets/scenes" "$ratio" <<'PY'
 import csv, os, sys
 rows = list(csv.DictReader(open(sys.argv[1])))

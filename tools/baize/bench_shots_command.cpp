@@ -12,15 +12,15 @@
 #include <sstream>
 
 #include "engine/io/scene.h"
+#include "engine/models/cushion_mathavan2010.h"
 #include "engine/play/random_shots.h"
 #include "engine/sim/cushion_impact_worker.h"
-#include "engine/models/cushion_mathavan2010.h"
 #include "physics/cushion_exact_solver.h"
 #include "physics/cushion_rolling_surface.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
-#include "tools/baize/progress.h"
 #include "tools/baize/median.h"
+#include "tools/baize/progress.h"
 
 namespace baize::tools {
 namespace {
@@ -226,15 +226,19 @@ void runBenchShots(const BenchShotsFlags& flags) {
   table << "random-single-shots-simple," << std::setprecision(4) << simple.one_core_us << ','
         << simple.two_core_wall_us << ',' << simple.events << row_end;
   std::cout << table.str();
-  std::cout << "random single shots: " << std::setprecision(4) << shots.size() / full.one_core_total_s
-            << " shots/s on one core (" << shots.size() << " shots; median events as above)\n";
-  std::cout << "random single shots with the full cushion model / with the simple rule at every cushion: "
-            << std::setprecision(3) << full.one_core_us / simple.one_core_us
-            << "x (one_core_us medians of the same shots in one run)\n";
+  std::cout << "random single shots: " << std::setprecision(4)
+            << shots.size() / full.one_core_total_s << " shots/s on one core (" << shots.size()
+            << " shots; median events as above)\n";
+  std::cout
+      << "random single shots with the full cushion model / with the simple rule at every cushion: "
+      << std::setprecision(3) << full.one_core_us / simple.one_core_us
+      << "x (one_core_us medians of the same shots in one run); of their total times: "
+      << full.one_core_total_s / simple.one_core_total_s
+      << "x (the shots whose impacts the table leaves to the exact solver weigh in)\n";
   const physics::RollingSurfaceStats built = rollingTableStats(shots);
   std::cout << "rolling balls' cushion table: " << built.cells_kept << " cells kept of "
-            << built.cells_built << " built from " << built.exact_solves
-            << " exact solutions in " << std::setprecision(3) << built.build_seconds
+            << built.cells_built << " built from " << built.exact_solves << " exact solutions in "
+            << std::setprecision(3) << built.build_seconds
             << " s, once per process and parameter set (the untimed pass over the shots: "
             << warm_up_s << " s)\n";
   if (flags.cushion_tolerance) {
