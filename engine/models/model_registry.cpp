@@ -83,21 +83,30 @@ std::shared_ptr<const Model> ModelRegistry<Model>::make(const std::string& name,
 template <class Model>
 std::shared_ptr<const Model> ModelRegistry<Model>::read(const JsonReader& group,
                                                         const ModelDefaults& defaults) const {
-  std::vector<std::string> known = {"model"};
-  for (const ModelEntry<Model>& entry : entries_) {
-    for (const std::string& key : entry.keys) {
-      if (!reads(known, key)) known.push_back(key);
+  // Every shot of a scene that names a model reads its group: the keys are checked in place, and
+  // the lists a refusal names are made only for its message.
+  const auto readByAny = [&](const std::string& key) {
+    return key == "model" ||
+           std::any_of(entries_.begin(), entries_.end(),
+                       [&](const ModelEntry<Model>& e) { return reads(e.keys, key); });
+  };
+  for (const auto& item : group.json().items()) {
+    if (readByAny(item.key())) continue;
+    std::vector<std::string> known = {"model"};
+    for (const ModelEntry<Model>& entry : entries_) {
+      for (const std::string& key : entry.keys) {
+        if (!reads(known, key)) known.push_back(key);
+      }
     }
-  }
-  for (const std::string& key : group.keys()) {
-    if (!reads(known, key)) group.reject(key, "unknown key; the keys here are " + commaList(known));
+    group.reject(item.key(), "unknown key; the keys here are " + commaList(known));
   }
   std::string name = default_name_;
   if (group.has("model")) name = group.text("model");
   const ModelEntry<Model>* chosen = find(name);
   if (!chosen) group.reject("model", "it must be " + namesText());
   // A key another model reads but this one does not: say which models read it.
-  for (const std::string& key : group.keys()) {
+  for (const auto& item : group.json().items()) {
+    const std::string& key = item.key();
     if (key == "model" || reads(chosen->keys, key)) continue;
     std::vector<std::string> readers;
     for (const ModelEntry<Model>& entry : entries_) {
