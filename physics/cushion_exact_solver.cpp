@@ -36,14 +36,14 @@
 // contact whose cone stops holding it (an event) slips along the friction it needed, so friction
 // stays continuous.
 //
-// Four special cases cut the cost where the general machinery is slow (docs/cushion-solvers.md, "Cost"):
-// the cloth contact's phi* while the nose slides is r0 / |r0| in closed form (its own friction
-// enters its slip rate isotropically); a slip growing from rest while the other contact slides
-// follows a held law corrected for the lag of its direction behind phi*; a slip falling along its
-// own line runs in P with its friction along that line until it vanishes, instead of decaying
-// exponentially in tau; and a slip growing well above s0 runs in P too. The rates of the common
-// modes (both contacts sliding, or one held while the other slides) are written out and inlined
-// into the Runge-Kutta stages, which carry the slips alongside the state.
+// Four special cases cut the cost where the general machinery is slow (docs/cushion-solvers.md,
+// "Cost"): the cloth contact's phi* while the nose slides is r0 / |r0| in closed form (its own
+// friction enters its slip rate isotropically); a slip growing from rest while the other contact
+// slides follows a held law corrected for the lag of its direction behind phi*; a slip falling
+// along its own line runs in P with its friction along that line until it vanishes, instead of
+// decaying exponentially in tau; and a slip growing well above s0 runs in P too. The rates of the
+// common modes (both contacts sliding, or one held while the other slides) are written out and
+// inlined into the Runge-Kutta stages, which carry the slips alongside the state.
 //
 // The system in tau is integrated with the Dormand-Prince 8(5,3) pair, its error measured across
 // the path (an error of tau alone moves no state off it), its steps capped at a few time constants
@@ -155,7 +155,7 @@ class ExactImpact : public EventLocation {
  public:
   ExactImpact(const CushionParams& params, const BallVelocity& incoming,
               const ExactSolverOptions& options)
-      : EventLocation(params, incoming, options.tolerance), options_(options) {
+      : EventLocation(params, incoming, options), options_(options) {
     result_.contact_changes.reserve(kContactChangesReserved);
   }
 
@@ -637,6 +637,10 @@ void validateExactSolverOptions(const ExactSolverOptions& options) {
     rejectValue(
         "exact solver tolerance", options.tolerance,
         "it must lie in [" + valueText(kMinTolerance) + ", " + valueText(kMaxTolerance) + "]");
+  }
+  if (!(options.min_error_share > 0 && options.min_error_share <= 1)) {
+    rejectValue("exact solver's smallest error share", options.min_error_share,
+                "it must lie in (0, 1]");
   }
   if (!(options.trace_spacing_Ns >= 0) || !std::isfinite(options.trace_spacing_Ns)) {
     rejectValue("trace spacing (N s)", options.trace_spacing_Ns, "it must be a finite number >= 0");

@@ -24,8 +24,12 @@ constexpr double kVanishedSlipFraction = 5;
 constexpr double kCreepErrorFraction = 10;
 
 ImpactEquations::ImpactEquations(const CushionParams& params, const BallVelocity& incoming,
-                                 double tolerance)
-    : params_(params), incoming_(incoming), tolerance_(tolerance) {
+                                 const ExactSolverOptions& options)
+    : params_(params),
+      incoming_(incoming),
+      tolerance_(options.tolerance),
+      min_error_share_(options.min_error_share) {
+  const double tolerance = options.tolerance;
   s_ = contactSinTheta(params);
   c_ = std::sqrt(1 - s_ * s_);
   M_ = params.mass_kg;

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <array>
 
+#include "physics/cushion_exact_solver.h"
 #include "physics/cushion_model.h"
 
 namespace baize::physics::cushion_exact {
@@ -68,7 +69,8 @@ struct Laws {
 // The impact's constants, its contacts' states and the equations every contact law shares.
 class ImpactEquations {
  public:
-  ImpactEquations(const CushionParams& params, const BallVelocity& incoming, double tolerance);
+  ImpactEquations(const CushionParams& params, const BallVelocity& incoming,
+                  const ExactSolverOptions& options);
 
   bool slipping(int k) const {
     return !contacts_[k].frictionless && contacts_[k].mode == ContactMode::Slip;
@@ -148,7 +150,8 @@ class ImpactEquations {
  protected:
   const CushionParams params_;
   const BallVelocity incoming_;
-  const double tolerance_;  // ExactSolverOptions::tolerance
+  const double tolerance_;        // ExactSolverOptions::tolerance
+  const double min_error_share_;  // ExactSolverOptions::min_error_share
   double s_ = 0, c_ = 0, M_ = 0, inverse_mass_ = 0, vy0_ = 0, velocity_scale_ = 0;
   double impulse_scale_ = 0;  // N s, M V
   double vanished_slip_ = 0;  // m/s, kVanishedSlipFraction

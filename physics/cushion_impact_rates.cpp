@@ -5,11 +5,6 @@
 
 namespace baize::physics::cushion_exact {
 
-// The smallest share of the impulse scale a step's error allowance is cut to (error per unit step):
-// steps in the change of variable near a vanishing slip advance P very little and need no less.
-// (Larger floors, 0.3 to 1, cost 3 to 10 % fewer evaluations but let rare impacts of the rolling
-// bench set exceed 1e-9 V0 at the default tolerance.)
-constexpr double kMinErrorShare = 0.2;
 // A slipping slip below the regularizing slip that grows may change by at most this multiple of its
 // own size in one step (so grow by at most 70 %, and turn by at most about 41 degrees). Near a slip
 // that small (a nose slip growing again after passing close by zero) a longer step comes near the
@@ -334,8 +329,8 @@ Step ImpactRates::finishStep(const State& z, Step step, State third, State fifth
   if (!(denominator > 0)) denominator = 1;
   // Error per unit step: a step may add error in proportion to the share of the impact's impulse
   // it covers, so the errors of many steps add up to about the tolerance, not to their number
-  // times it.
-  const double share = std::max(std::abs(step.z[kP] - z[kP]) / impulse_scale_, kMinErrorShare);
+  // times it; no less than min_error_share of it (ExactSolverOptions).
+  const double share = std::max(std::abs(step.z[kP] - z[kP]) / impulse_scale_, min_error_share_);
   const double error_per_share =
       std::abs(h) * fifth_squared / (std::sqrt(State::RowsAtCompileTime * denominator) * share);
   step.error = std::max(error_per_share, smallSlipGrowthError(slips_before, slips_after));

@@ -15,8 +15,8 @@ namespace baize::physics::cushion_exact {
 // slip left an impact 4.7e-9 V0 off, and grippy cushions (mu_s 0.35 to 0.425) missed 1e-9 V0 in
 // 3 of 1000 impacts. Capping the step before it is taken also spares the rejections the controller
 // made there: the impacts of play take 2.6 % fewer evaluations. Of the caps tried (1.5 to 5),
-// 2.75 was the one with no impact above 1e-9 V0 on any set (docs/cushion-solvers.md, "Steps capped by a
-// slip's turning").
+// 2.75 was the one with no impact above 1e-9 V0 on any set (docs/cushion-solvers.md, "Steps capped
+// by a slip's turning").
 constexpr double kSlipDirectionTimeConstants = 2.75;
 // A step (in tau) may span at most this many of a slipping slip's turning scales |u| / |du/dtau|
 // at its start (turningScaleStep): about the distance to the solution's nearest complex
@@ -26,8 +26,8 @@ constexpr double kSlipDirectionTimeConstants = 2.75;
 // read 900 times below its true error, and the impact ended 1.7e-9 V0 off. With this cap none of
 // 72,000 grippy impacts lies above 5e-10 V0 (5 did, the largest 9.7e-10), nor with caps of 0.8 to
 // 1.25 any of 18,000 of them; 1.5 left 25 of the 72,000, 3 of them above 1e-9, and 0.5 costs 8 %
-// more evaluations on the impacts of play (docs/cushion-solvers.md, "Steps capped at a slip's turning
-// scale").
+// more evaluations on the impacts of play (docs/cushion-solvers.md, "Steps capped at a slip's
+// turning scale").
 constexpr double kTurningScaleSteps = 1.0;
 // Step-size control of the embedded pair: safety factor and bounds on the change per step.
 constexpr double kStepSafety = 0.9;
@@ -111,8 +111,8 @@ bool extrapolatedRoot(double gp, double dp, double g0, double d0, double H, doub
 }
 
 StepControl::StepControl(const CushionParams& params, const BallVelocity& incoming,
-                         double tolerance)
-    : ImpactRates(params, incoming, tolerance) {
+                         const ExactSolverOptions& options)
+    : ImpactRates(params, incoming, options) {
   // See slipDirectionStep: the cloth's friction at its largest is mu_s (s + c mu_w). (A
   // frictionless contact never slips with friction: its bound is never read.)
   const std::array<double, 2> direction_rate = {

@@ -30,7 +30,8 @@ bool extrapolatedRoot(double gp, double dp, double g0, double d0, double H, doub
 
 class StepControl : public ImpactRates {
  public:
-  StepControl(const CushionParams& params, const BallVelocity& incoming, double tolerance);
+  StepControl(const CushionParams& params, const BallVelocity& incoming,
+              const ExactSolverOptions& options);
 
   // Caps on the next step (tau), each described where it is defined.
   double restartStep(const State& k1) const;

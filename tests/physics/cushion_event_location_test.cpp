@@ -36,7 +36,7 @@ struct Frictionless {
 
 TEST(CushionEventLocation, PhaseEndFunctionIsTheNormalVelocityWhileCompressing) {
   const Frictionless f;
-  const EventLocation impact(f.params, f.ball, kTolerance);
+  const EventLocation impact(f.params, f.ball, test::partsOptions());
   const Event phase;
   EXPECT_EQ(impact.eventValue(phase, State::Zero()), f.ball.v.y());
   EXPECT_EQ(impact.phaseEndScale(), f.ball.v.y());
@@ -48,7 +48,7 @@ TEST(CushionEventLocation, PhaseEndFunctionIsTheNormalVelocityWhileCompressing) 
 
 TEST(CushionEventLocation, LocatesTheEndOfCompressionInsideAStep) {
   const Frictionless f;
-  EventLocation impact(f.params, f.ball, kTolerance);
+  EventLocation impact(f.params, f.ball, test::partsOptions());
   const Event phase;
   const State z = State::Zero();
   const State k1 = impact.rate(z);
@@ -65,7 +65,7 @@ TEST(CushionEventLocation, LocatesTheEndOfCompressionInsideAStep) {
 
 TEST(CushionEventLocation, LandsOnThePhaseEndFromAStepAimedShortOfIt) {
   const Frictionless f;
-  EventLocation impact(f.params, f.ball, kTolerance);
+  EventLocation impact(f.params, f.ball, test::partsOptions());
   const Event phase;
   const State z = State::Zero();
   const State k1 = impact.rate(z);

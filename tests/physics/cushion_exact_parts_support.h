@@ -13,6 +13,11 @@ namespace baize::physics::test {
 
 // The parts are built at the solver's default tolerance (ExactSolverOptions).
 inline constexpr double kPartsTolerance = 3e-11;
+inline ExactSolverOptions partsOptions() {
+  ExactSolverOptions options;
+  options.tolerance = kPartsTolerance;
+  return options;
+}
 
 // The paper's snooker cushion, and a pool one with the nose at 63.5 % of the ball's diameter.
 inline CushionParams snookerCushion() { return CushionParams{}; }

@@ -424,12 +424,12 @@ TEST(CushionExactSolver, ASlipPassingCloseByZeroIsNotCrossedInOneStep) {
   }
 }
 
-// Regression (docs/cushion-solvers.md, "Known: a stalled slip on a grippy cushion"): on a grippy snooker
-// cushion the nose slip falls along its line at a hundred-thousandth of its friction's scale, and
-// in tau the solver crawled until it ran out of steps at the default tolerance (and at 1e-11 to
-// 4e-11). With the step cap and a growing slip run in P it ended here but failed at 1e-13; it has
-// ended at every tolerance from 1e-14 to 1e-8 since (checked at 1623933 and after), though nothing
-// in the method addresses the stall, so another step sequence may bring it back.
+// Regression (docs/cushion-solvers.md, "Known: a stalled slip on a grippy cushion"): on a grippy
+// snooker cushion the nose slip falls along its line at a hundred-thousandth of its friction's
+// scale, and in tau the solver crawled until it ran out of steps at the default tolerance (and at
+// 1e-11 to 4e-11). With the step cap and a growing slip run in P it ended here but failed at 1e-13;
+// it has ended at every tolerance from 1e-14 to 1e-8 since (checked at 1623933 and after), though
+// nothing in the method addresses the stall, so another step sequence may bring it back.
 TEST(CushionExactSolver, ASlipFallingVerySlowlyOnAGrippyCushionEnds) {
   CushionParams p;  // the paper's snooker cushion, with grippy friction
   p.cushion_friction = 0.38932961933842453;
@@ -1159,7 +1159,7 @@ TEST(CushionExactSolver, HeadOnRollingReboundMatchesMeasuredSnookerData) {
 // --- 9. bad options
 // -------------------------------------------------------------------------------
 
-TEST(CushionExactSolver, RejectsToleranceOutsideItsRangeAndBadTraceSpacing) {
+TEST(CushionExactSolver, RejectsToleranceOrErrorShareOutsideTheirRangesAndBadTraceSpacing) {
   const CushionParams p;
   const BallVelocity in = incomingBall(1.0, degrees(60), 0, 0);
   auto withTolerance = [&](double tolerance) {
@@ -1189,6 +1189,16 @@ TEST(CushionExactSolver, RejectsToleranceOutsideItsRangeAndBadTraceSpacing) {
   expectRejected(withSpacing(-0.25), {"trace spacing", "-0.25"});
   expectRejected(withSpacing(std::numeric_limits<double>::quiet_NaN()), {"trace spacing", "nan"});
   expectRejected(withSpacing(std::numeric_limits<double>::infinity()), {"trace spacing", "inf"});
+  auto withErrorShare = [&](double share) {
+    return [=] {
+      ExactSolverOptions options;
+      options.min_error_share = share;
+      solveCushionImpactExact(p, in, options);
+    };
+  };
+  expectRejected(withErrorShare(0.0), {"error share", "= 0", "(0, 1]"});
+  expectRejected(withErrorShare(1.5), {"error share", "1.5", "(0, 1]"});
+  expectRejected(withErrorShare(std::numeric_limits<double>::quiet_NaN()), {"error share", "nan"});
   // The solver validates its inputs (the validation itself is tested with the model).
   CushionParams bad = p;
   bad.contact_height_m = 2 * p.radius_m;

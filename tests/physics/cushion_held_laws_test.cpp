@@ -41,7 +41,7 @@ void expectGrowsAlongItself(const HeldLaws& impact, int k, Laws laws, const Eige
 
 TEST(CushionHeldLaws, SlidingContactsSlideAlongTheirSlips) {
   const CushionParams p = test::snookerCushion();
-  const HeldLaws impact(p, test::spinningBall(p), kTolerance);
+  const HeldLaws impact(p, test::spinningBall(p), test::partsOptions());
   const auto u = impact.slips(State::Zero());
   std::array<double, 2> speed{};
   const Laws laws = impact.lawsAt(u, &speed);
@@ -60,7 +60,8 @@ TEST(CushionHeldLaws, HeldClothSticksInsideItsConeAndElseSlidesAlongPhiStar) {
   for (double angle_deg : {10.0, 30.0, 50.0, 70.0, 90.0}) {
     for (double side : {-1.0, 0.0, 1.0}) {
       const double a = angle_deg * 3.14159265358979323846 / 180;
-      Held impact(p, incomingBall(1.5, a, 1.5 / p.radius_m, side * 1.5 / p.radius_m), kTolerance);
+      Held impact(p, incomingBall(1.5, a, 1.5 / p.radius_m, side * 1.5 / p.radius_m),
+                  test::partsOptions());
       impact.setContactMode(1, ContactMode::Stick);
       auto u = impact.slips(State::Zero());
       u[1].setZero();
@@ -91,7 +92,7 @@ void forHeldNoseUnderSlidingCloth(double mu_w, const Check& check) {
   p.cushion_friction = mu_w;
   for (double angle_deg : {20.0, 45.0, 80.0}) {
     const double a = angle_deg * 3.14159265358979323846 / 180;
-    Held impact(p, incomingBall(2.0, a, -1.0 / p.radius_m, 2.0 / p.radius_m), kTolerance);
+    Held impact(p, incomingBall(2.0, a, -1.0 / p.radius_m, 2.0 / p.radius_m), test::partsOptions());
     impact.setContactMode(0, ContactMode::Stick);
     const auto u = impact.slips(State::Zero());
     Laws laws;
@@ -151,7 +152,8 @@ TEST(CushionHeldLaws, TheClothsRateWhileTheNoseSticksIsNotTakenAsAffine) {
   for (double angle_deg : {20.0, 45.0, 80.0}) {
     for (double side : {-2.0, 0.0, 2.0}) {
       const double a = angle_deg * 3.14159265358979323846 / 180;
-      Held impact(p, incomingBall(2.0, a, -1.0 / p.radius_m, side / p.radius_m), kTolerance);
+      Held impact(p, incomingBall(2.0, a, -1.0 / p.radius_m, side / p.radius_m),
+                  test::partsOptions());
       impact.setContactMode(0, ContactMode::Stick);
       impact.setContactMode(1, ContactMode::Stick);
       Laws laws;

@@ -41,7 +41,7 @@ State someState() {
 TEST(CushionImpactEquations, SlipsAtTheStartAreTheModels) {
   for (const CushionParams& p : {test::snookerCushion(), test::poolCushion()}) {
     const BallVelocity ball = test::spinningBall(p);
-    const ImpactEquations impact(p, ball, kTolerance);
+    const ImpactEquations impact(p, ball, test::partsOptions());
     const auto u = impact.slips(State::Zero());
     EXPECT_NEAR((u[0] - cushionSlip(p, ball)).norm(), 0, kRoundoff);
     EXPECT_NEAR((u[1] - clothSlip(p, ball)).norm(), 0, kRoundoff);
@@ -51,7 +51,7 @@ TEST(CushionImpactEquations, SlipsAtTheStartAreTheModels) {
 
 TEST(CushionImpactEquations, SlipsChangeAtTheRateEachFrictionLawGives) {
   const CushionParams p = test::snookerCushion();
-  const ImpactEquations impact(p, test::spinningBall(p), kTolerance);
+  const ImpactEquations impact(p, test::spinningBall(p), test::partsOptions());
   const State z = someState();
   Laws laws;
   laws.direction = {Eigen::Vector2d(0.6, 0.8), Eigen::Vector2d(-1, 0)};
@@ -86,7 +86,7 @@ TEST(CushionImpactEquations, SlipsChangeAtTheRateEachFrictionLawGives) {
 TEST(CushionImpactEquations, BallFollowsTheModelsImpulseResponse) {
   const CushionParams p = test::poolCushion();
   const BallVelocity ball = test::spinningBall(p);
-  const ImpactEquations impact(p, ball, kTolerance);
+  const ImpactEquations impact(p, ball, test::partsOptions());
   const State z = someState();
   const BallVelocity change =
       impulseResponse(p, z[kP], Eigen::Vector2d(z[kAx], z[kAy]), Eigen::Vector2d(z[kBx], z[kBy]));
@@ -101,7 +101,7 @@ TEST(CushionImpactEquations, BallFollowsTheModelsImpulseResponse) {
 
 TEST(CushionImpactEquations, ExtendedStateCarriesTheSlipsAndTheirRates) {
   const CushionParams p = test::snookerCushion();
-  const ImpactEquations impact(p, test::spinningBall(p), kTolerance);
+  const ImpactEquations impact(p, test::spinningBall(p), test::partsOptions());
   const State z = someState();
   const Extended y = impact.withSlips(z);
   EXPECT_EQ(y.head<kStateSize>(), z);
@@ -118,7 +118,7 @@ TEST(CushionImpactEquations, ExtendedStateCarriesTheSlipsAndTheirRates) {
 TEST(CushionImpactEquations, ContactsStartSlippingAndFrictionlessOnesNeverDo) {
   CushionParams p = test::snookerCushion();
   p.cloth_friction = 0;
-  const ImpactEquations impact(p, test::spinningBall(p), kTolerance);
+  const ImpactEquations impact(p, test::spinningBall(p), test::partsOptions());
   EXPECT_TRUE(impact.slipping(0));
   EXPECT_FALSE(impact.held(0));
   EXPECT_FALSE(impact.slipping(1));

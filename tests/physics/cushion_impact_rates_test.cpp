@@ -30,7 +30,7 @@ double relativeDifference(const State& a, const State& b) {
 
 TEST(CushionImpactRates, BothSlidingRateIsTheGeneralLawsRate) {
   for (const CushionParams& p : {test::snookerCushion(), test::poolCushion()}) {
-    Rates impact(p, test::spinningBall(p), kTolerance);
+    Rates impact(p, test::spinningBall(p), test::partsOptions());
     ASSERT_TRUE(impact.bothSliding());
     State z;
     z << 0.01, 0.001, -0.0005, 0.002, 0.0004, 0.001;
@@ -52,7 +52,7 @@ TEST(CushionImpactRates, HeldClothRateIsTheGeneralLawsRate) {
   const CushionParams p = test::snookerCushion();
   for (double angle_deg : {15.0, 45.0, 75.0}) {
     const double a = angle_deg * 3.14159265358979323846 / 180;
-    Rates impact(p, incomingBall(1.5, a, 1.5 / p.radius_m, 0.5 / p.radius_m), kTolerance);
+    Rates impact(p, incomingBall(1.5, a, 1.5 / p.radius_m, 0.5 / p.radius_m), test::partsOptions());
     impact.setContactMode(1, ContactMode::Stick);
     ASSERT_TRUE(impact.clothHeldWhileNoseSlides());
     State z;
@@ -71,7 +71,8 @@ TEST(CushionImpactRates, HeldClothSlidingFromRestHasTheGeneralLawsLag) {
   for (double angle_deg : {15.0, 45.0, 75.0}) {
     const double a = angle_deg * 3.14159265358979323846 / 180;
     for (double growth_order : {1.0, 2.0}) {
-      Rates impact(p, incomingBall(1.5, a, 1.5 / p.radius_m, 0.5 / p.radius_m), kTolerance);
+      Rates impact(p, incomingBall(1.5, a, 1.5 / p.radius_m, 0.5 / p.radius_m),
+                   test::partsOptions());
       impact.setContactMode(1, ContactMode::Stick);
       if (!impact.clothHeldWhileNoseSlides()) continue;
       State z;
@@ -95,7 +96,7 @@ TEST(CushionImpactRates, FrictionlessImpactIsIntegratedExactly) {
   p.cushion_friction = 0;
   p.cloth_friction = 0;
   const BallVelocity ball = test::spinningBall(p);
-  Rates impact(p, ball, kTolerance);
+  Rates impact(p, ball, test::partsOptions());
   const State z = State::Zero();
   const State k1 = impact.rate(z);
   // dP/dtau = 1, no friction, dW/dP = c v_y with v_y = v_y0 - c P / M.
@@ -114,7 +115,7 @@ TEST(CushionImpactRates, FrictionlessImpactIsIntegratedExactly) {
 
 TEST(CushionImpactRates, StepErrorFallsWithTheStep) {
   const CushionParams p = test::poolCushion();
-  Rates impact(p, test::spinningBall(p), kTolerance);
+  Rates impact(p, test::spinningBall(p), test::partsOptions());
   const State z = State::Zero();
   const State k1 = impact.rate(z);
   const double h = 0.3 * p.mass_kg * test::spinningBall(p).v.y();

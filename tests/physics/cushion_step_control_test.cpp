@@ -56,7 +56,7 @@ TEST(CushionStepControl, ExtrapolatedRootOfALineAndOfACubic) {
 
 TEST(CushionStepControl, ControllerFollowsTheTrendOfAcceptedSteps) {
   const CushionParams p = test::snookerCushion();
-  StepControl control(p, test::spinningBall(p), kTolerance);
+  StepControl control(p, test::spinningBall(p), test::partsOptions());
   // The first accepted step: the plain factor.
   EXPECT_EQ(control.acceptedStepFactor(1.0, 0.5), stepFactor(0.5));
   // The next, shorter by half with the same error: the steps shrink, and so does the next one.
@@ -70,14 +70,14 @@ TEST(CushionStepControl, NoCapsWithoutFrictionAndCapsWithIt) {
   {
     CushionParams smooth = p;
     smooth.cushion_friction = smooth.cloth_friction = 0;
-    StepControl control(smooth, ball, kTolerance);
+    StepControl control(smooth, ball, test::partsOptions());
     const State z = State::Zero();
     const State k1 = control.rate(z);
     EXPECT_EQ(control.cappedStep(control.slips(z), k1, 0.25), 0.25);
     // The restart step: a tenth of the first step's impulse, M v_y0 / 5, at dP/dtau = 1.
     EXPECT_NEAR(control.restartStep(k1), 0.1 * 0.2 * p.mass_kg * ball.v.y(), 1e-18);
   }
-  StepControl control(p, ball, kTolerance);
+  StepControl control(p, ball, test::partsOptions());
   const State z = State::Zero();
   const State k1 = control.rate(z);
   const auto u = control.slips(z);

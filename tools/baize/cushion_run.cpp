@@ -58,7 +58,10 @@ physics::CushionImpactResult solveCushionShot(const physics::CushionParams& para
     options.record_trace = record_trace;
     return physics::solveCushionImpactPaper(params, incoming, options);
   }
-  physics::ExactSolverOptions options;
+  // The table's fallback keeps its own options (error share) at whatever tolerance is asked for.
+  physics::ExactSolverOptions options = setting.kind == SolverKind::Tabulated
+                                            ? physics::tabulatedFallbackOptions()
+                                            : physics::ExactSolverOptions{};
   options.tolerance = setting.exact_tolerance;
   if (record_trace) {
     const double impact_scale_Ns = (1 + params.restitution) * params.mass_kg * incoming.v.y();
