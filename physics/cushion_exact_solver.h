@@ -15,18 +15,19 @@ namespace baize::physics {
 
 struct ExactSolverOptions {
   // Error allowed, relative to the velocity scale |v| + R |w| (and the matching impulse and work
-  // scales), per share of the impact's impulse (error per unit step). Accepted: [1e-14, 1e-6]. The
-  // default keeps output velocities within 1e-9 V0 of the converged solution: over the 12000
-  // seeded impacts of `baize bench cushion --impacts 8000` (wide and rolling sets) the largest
-  // error is 1.9e-10 V0 on the paper's snooker cushion and 4.95e-10 V0 on the 9 ft pool table's
-  // (tests and the bench check it on smaller sets); over the 16,180 impacts of 5000 random single
-  // shots (`baize bench cushion --from-shots 5000`) it is 3.5e-10 V0.
+  // scales), per share of the impact's impulse (error per unit step; see min_error_share).
+  // Accepted: [1e-14, 1e-6]. The default keeps output velocities within 1e-9 V0 of the converged
+  // solution: over the 12000 seeded impacts of `baize bench cushion --impacts 8000` (wide and
+  // rolling sets) the largest error is 1.9e-10 V0 on the paper's snooker cushion and 4.95e-10 V0 on
+  // the 9 ft pool table's (tests and the bench check it on smaller sets); over the 16,180 impacts
+  // of 5000 random single shots (`baize bench cushion --from-shots 5000`) it is 3.5e-10 V0.
   double tolerance = 3e-11;
   // The smallest share of the impact's impulse scale (M times the velocity scale) a step's error
   // allowance is cut to: a step covering a share s of it may add s times the tolerance, but no
   // less than this share of it, so that steps in the change of variable near a vanishing slip,
   // which advance P very little, are not held to an allowance near zero. Accepted: (0, 1]; 1 makes
-  // the tolerance an error per step. 0.2 keeps the exact solver's promise of 1e-9 V0: floors of
+  // the tolerance an error per step (for every step covering at most the impulse scale, which is
+  // about all of them). 0.2 keeps the exact solver's promise of 1e-9 V0: floors of
   // 0.3 to 1 cost 3 to 10 % fewer evaluations but let rare impacts of the drawn rolling set exceed
   // it.
   double min_error_share = 0.2;

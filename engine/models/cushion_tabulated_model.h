@@ -1,7 +1,8 @@
 // Cushion model "tabulated", the default: the Mathavan 2010 model, with the impacts of rolling
 // balls answered from the parameter set's table of exact solutions
 // (physics/cushion_rolling_surface.h) and every other impact solved by the exact solver at
-// physics::kTabulatedFallbackTolerance, all within 1e-8 V0 of the converged solution.
+// physics::kTabulatedFallbackTolerance, per step (physics::tabulatedFallbackOptions), all within
+// 1e-8 V0 of the converged solution.
 #pragma once
 
 #include "engine/models/cushion_exact_model.h"
@@ -18,7 +19,8 @@ class TabulatedCushionModel final : public ExactCushionModel {
 };
 
 // The registration: the keys of "exact"; tolerance is the exact solver's, for the impacts the
-// table does not answer (default physics::kTabulatedFallbackTolerance).
+// table does not answer (default physics::kTabulatedFallbackTolerance; the error share is always
+// physics::kTabulatedFallbackErrorShare).
 ModelEntry<CushionContactModel> tabulatedCushionModel();
 
 }  // namespace baize::engine

@@ -22,7 +22,6 @@ using cushion_exact::Laws;
 using cushion_exact::State;
 using Held = test::Exposed<HeldLaws>;
 
-constexpr double kTolerance = test::kPartsTolerance;
 // phi* is solved to 1e-10 rad (kCreepAngleTolerance): its slip rate's turn about it is that
 // small against the rate (relative).
 constexpr double kDirectionResidual = 1e-9;

@@ -26,7 +26,6 @@ using cushion_exact::kWork;
 using cushion_exact::Laws;
 using cushion_exact::State;
 
-constexpr double kTolerance = test::kPartsTolerance;
 // Arithmetic in another association than the code under test, on values of order 1 m/s
 // (absolute, m/s).
 constexpr double kRoundoff = 1e-13;

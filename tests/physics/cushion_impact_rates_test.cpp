@@ -20,7 +20,6 @@ using cushion_exact::State;
 using cushion_exact::Step;
 using Rates = test::Exposed<ImpactRates>;
 
-constexpr double kTolerance = test::kPartsTolerance;
 // The written-out rates reassociate the general laws' arithmetic (relative to the rate's size).
 constexpr double kReassociationRelative = 1e-14;
 

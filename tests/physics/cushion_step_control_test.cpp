@@ -20,7 +20,6 @@ using cushion_exact::State;
 using cushion_exact::StepControl;
 using cushion_exact::stepFactor;
 
-constexpr double kTolerance = test::kPartsTolerance;
 // inverseEighthRoot's promise (cushion_step_control.cpp): within 0.21 % either way.
 constexpr double kEighthRootRelative = 2.1e-3;
 

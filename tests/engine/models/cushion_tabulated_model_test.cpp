@@ -71,7 +71,7 @@ TEST(CushionTabulatedModel, OverriddenParametersGiveTheExactModelsAnswers) {
     exact_group["model"] = "exact";
     exact.cushion = cushionModel(exact_group);
     const double speed = 1.1, radius = tabulated.ball.radius_m;
-    // Rolling (from the table) and sliding (exact on both paths).
+    // Rolling (from the table) and sliding (exact on both paths, with each path's options).
     for (const double topspin : {speed / radius, 0.0}) {
       const BallVelocity in = physics::incomingBall(speed, 1.1, topspin, 0.3 * speed / radius);
       EXPECT_LE(difference(tabulated.cushion->resolve(tabulated, in),
