@@ -55,25 +55,53 @@ Polynomial makePolynomial(const std::array<double, 5>& c) {
   return p;
 }
 
-Polynomial derivative(const Polynomial& p) {
-  Polynomial d;
+// The search runs on polynomials of a fixed degree D (the degree of the given one, then of its
+// derivatives): Horner's rule and the loops over coefficients unroll, and nothing tests the degree
+// again. The arithmetic is that of a runtime degree, operation for operation.
+template <int D>
+struct Fixed {
+  static_assert(D >= 0 && D <= 4);
+  std::array<double, D + 1> c;  // lowest power first; c[D] != 0
+};
+
+template <int D>
+Fixed<D> fixedOf(const Polynomial& p) {
+  Fixed<D> f;
+  for (int i = 0; i <= D; ++i) f.c[i] = p.c[i];
+  return f;
+}
+
+template <int D>
+Fixed<D - 1> derivative(const Fixed<D>& p) {
   static constexpr double kPower[5] = {0, 1, 2, 3, 4};  // i as a double: read, not converted
-  for (int i = 1; i <= p.degree; ++i) d.c[i - 1] = kPower[i] * p.c[i];
-  d.degree = p.degree >= 1 ? p.degree - 1 : -1;  // i * c_i is never 0 when c_i is not
+  Fixed<D - 1> d;
+  for (int i = 1; i <= D; ++i) d.c[i - 1] = kPower[i] * p.c[i];  // never 0 when c_i is not
   return d;
 }
 
 // Horner's rule, with the running sum of magnitudes sum |c_i| |t|^i for the error bound.
-PolynomialValue evaluate(const Polynomial& p, double t) {
-  if (p.degree < 0) return {0.0, kUnderflowFloor};
-  double value = p.c[p.degree];
+template <int D>
+PolynomialValue evaluate(const Fixed<D>& p, double t) {
+  double value = p.c[D];
   double magnitude = std::abs(value);
   const double abs_t = std::abs(t);
-  for (int i = p.degree - 1; i >= 0; --i) {
+  for (int i = D - 1; i >= 0; --i) {
     value = value * t + p.c[i];
     magnitude = magnitude * abs_t + std::abs(p.c[i]);
   }
   return {value, kPolynomialErrorUnitRoundoffs * kUnitRoundoff * magnitude + kUnderflowFloor};
+}
+
+// The same for a polynomial of any degree (the zero polynomial: 0 within the underflow floor).
+PolynomialValue evaluate(const Polynomial& p, double t) {
+  switch (p.degree) {
+    case 0: return evaluate(fixedOf<0>(p), t);
+    case 1: return evaluate(fixedOf<1>(p), t);
+    case 2: return evaluate(fixedOf<2>(p), t);
+    case 3: return evaluate(fixedOf<3>(p), t);
+    case 4: return evaluate(fixedOf<4>(p), t);
+    default: return {0.0, kUnderflowFloor};
+  }
 }
 
 // A piece end: where it is, the computed value, and its sign with values inside the error bound
@@ -86,7 +114,8 @@ struct Sample {
   int sign;  // -1, 0 (within rounding of zero) or +1
 };
 
-Sample sampleAt(const Polynomial& p, double t) {
+template <int D>
+Sample sampleAt(const Fixed<D>& p, double t) {
   const PolynomialValue v = evaluate(p, t);
   const int sign = std::abs(v.value) <= v.error_bound ? 0 : (v.value > 0 ? 1 : -1);
   return {t, v.value, sign};
@@ -141,13 +170,14 @@ double bisectionPoint(double lo, double hi) {
 // alone may approach from one side and leave the far end where it is, so every kProgressWindow
 // steps the bracket must have lost half its doubles, or the next step is a bisection: the search
 // always ends, at adjacent doubles at the latest.
-double refineBracketedRoot(const Polynomial& p, const Polynomial& dp, double lo, double value_lo,
+template <int D>
+double refineBracketedRoot(const Fixed<D>& p, const Fixed<D - 1>& dp, double lo, double value_lo,
                            double hi, double value_hi) {
   const bool rising = value_lo < 0;
   // First guess: where the chord crosses zero (exact for a straight line), or for a quadratic its
   // root in the bracket from the closed form (Newton then only polishes it).
   double x = lo + (hi - lo) * (value_lo / (value_lo - value_hi));
-  if (p.degree == 2) {
+  if constexpr (D == 2) {
     const double a = p.c[2], b = p.c[1], c = p.c[0];
     const double discriminant = b * b - 4 * a * c;
     if (discriminant >= 0) {
@@ -214,7 +244,8 @@ struct RootList {
 };
 
 // In FirstClosingRoot mode: is the zero-valued piece end `j` an instant at which the gap closes?
-bool closesAt(const Polynomial& dp, const Sample* ends, int count, int j) {
+template <int D>
+bool closesAt(const Fixed<D>& dp, const Sample* ends, int count, int j) {
   if (count == 1) {  // a single instant: closing unless clearly rising there
     const PolynomialValue slope = evaluate(dp, ends[0].t);
     return slope.value <= slope.error_bound;
@@ -224,22 +255,26 @@ bool closesAt(const Polynomial& dp, const Sample* ends, int count, int j) {
   return !(ends[j - 1].sign < 0 && ends[j + 1].sign > 0);  // interior: unless rising through zero
 }
 
-// Roots of p (not the zero polynomial) in [a, b], a <= b.
-RootList collectRoots(const Polynomial& p, double a, double b, Mode mode) {
+// Roots of p (degree D >= 1) in [a, b], a <= b.
+template <int D>
+RootList collectRoots(const Fixed<D>& p, double a, double b, Mode mode) {
   RootList roots;
-  if (p.degree <= 0) return roots;  // a nonzero constant
-  const Polynomial dp = derivative(p);
+  const Fixed<D - 1> dp = derivative(p);
 
   // Piece ends: a, the critical points inside (a, b), b. p is monotone on each piece.
-  constexpr int kMaxEnds = RootList::kCapacity + 2;
+  // (a, the critical points, b: a line has no critical points.)
+  constexpr int kMaxEnds = D >= 2 ? RootList::kCapacity + 2 : 2;
   std::array<Sample, kMaxEnds> ends;
+  if constexpr (D == 1) ends = {};  // two ends: cheap to zero, and GCC then sees them written
   int count = 0;
   ends[count++] = sampleAt(p, a);
-  if (p.degree >= 2 && a < b) {
-    const RootList critical = collectRoots(dp, a, b, Mode::AllRoots);
-    for (int i = 0; i < critical.count; ++i) {
-      const double t = critical.values[i];
-      if (t > ends[count - 1].t && t < b) ends[count++] = sampleAt(p, t);
+  if constexpr (D >= 2) {
+    if (a < b) {
+      const RootList critical = collectRoots(dp, a, b, Mode::AllRoots);
+      for (int i = 0; i < critical.count; ++i) {
+        const double t = critical.values[i];
+        if (t > ends[count - 1].t && t < b) ends[count++] = sampleAt(p, t);
+      }
     }
   }
   if (b > a) ends[count++] = sampleAt(p, b);
@@ -291,6 +326,17 @@ RootList collectRoots(const Polynomial& p, double a, double b, Mode mode) {
     reached = false;
   }
   return roots;
+}
+
+// Roots of p (not the zero polynomial) in [a, b], a <= b: the search at p's degree.
+RootList collectRoots(const Polynomial& p, double a, double b, Mode mode) {
+  switch (p.degree) {
+    case 1: return collectRoots(fixedOf<1>(p), a, b, mode);
+    case 2: return collectRoots(fixedOf<2>(p), a, b, mode);
+    case 3: return collectRoots(fixedOf<3>(p), a, b, mode);
+    case 4: return collectRoots(fixedOf<4>(p), a, b, mode);
+    default: return RootList{};  // a nonzero constant
+  }
 }
 
 std::string show(double value) {
