@@ -261,11 +261,11 @@ RootList collectRoots(const Fixed<D>& p, double a, double b, Mode mode) {
   RootList roots;
   const Fixed<D - 1> dp = derivative(p);
 
-  // Piece ends: a, the critical points inside (a, b), b. p is monotone on each piece.
-  // (a, the critical points, b: a line has no critical points.)
+  // Piece ends: a, the critical points inside (a, b), b. p is monotone on each piece. A line has
+  // no critical points: two ends.
   constexpr int kMaxEnds = D >= 2 ? RootList::kCapacity + 2 : 2;
   std::array<Sample, kMaxEnds> ends;
-  if constexpr (D == 1) ends = {};  // two ends: cheap to zero, and GCC then sees them written
+  if constexpr (D == 1) ends = {};  // cheap for two; spares GCC 12 a false -Wmaybe-uninitialized
   int count = 0;
   ends[count++] = sampleAt(p, a);
   if constexpr (D >= 2) {
