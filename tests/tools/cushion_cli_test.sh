@@ -369,8 +369,18 @@ assert shots["defaultexact"] < shots["N=50000paper"] < shots["N=100paper"], shot
 ' "$work/bench_pool.csv" "$work/bench_shots.csv"
 grep -qE "^exact default: [0-9]+\.[0-9] evaluations per impact; [0-9]+ of [0-9]+ impacts above 5e-10 V0, 0 above the promised 1e-9 V0 \(kept\)$" \
   "$work/bench_shots.out" || fail "the shots bench does not report the exact solver's promise: $(grep "exact default" "$work/bench_shots.out")"
-grep -qE "^tabulated default \(the default path\): [1-9][0-9]* of [0-9]+ impacts answered from the table, the rest solved exactly at tolerance 3e-10 \([0-9.e+]+ rate evaluations each\); [0-9.e+-]+ ns median; largest error [0-9.e+-]+ V0, 99.9th percentile [0-9.e+-]+ V0; promised 1e-8 V0 \(kept\)$" \
+grep -qE "^tabulated default \(the default path\): [1-9][0-9]* of [0-9]+ impacts answered from the table, the rest solved exactly at tolerance 3e-10 \([0-9.e+]+ rate evaluations each; the [0-9]+ with a stick phase take [0-9.e+-]+ % of them\); [0-9.e+-]+ ns median; largest error [0-9.e+-]+ V0, 99.9th percentile [0-9.e+-]+ V0; promised 1e-8 V0 \(kept\)$" \
   "$work/bench_shots.out" || fail "the shots bench does not report the default path's promise: $(grep "tabulated default" "$work/bench_shots.out")"
+# The impacts left to the exact solver that have a stick phase: no more of them than were left, and
+# their share of the evaluations a percentage.
+check_python '
+import re
+line = next(l for l in open(sys.argv[1]) if l.startswith("tabulated default"))
+m = re.search(r"(\d+) of (\d+) impacts answered from the table.*; the (\d+) with a stick phase take ([0-9.e+-]+) % of them\)", line)
+assert m, line
+answered, impacts, stuck, share = int(m[1]), int(m[2]), int(m[3]), float(m[4])
+assert stuck <= impacts - answered and 0 <= share <= 100 and (share > 0) == (stuck > 0), line
+' "$work/bench_shots.out"
 
 # The bench on the impacts of one scene's shot: as many as the scene's result counts cushion and
 # jaw contacts, its table's cushion, the default path's split between the table and the exact
@@ -437,7 +447,8 @@ text = open(sys.argv[1]).read()
 exact = float(re.search(r"^exact default: ([0-9.]+) evaluations per impact", text, re.M).group(1))
 path = re.search(r"^tabulated default \(the default path\): 0 of 10 impacts answered from the "
                  r"table, the rest solved exactly at tolerance 3e-10 \(([0-9.e+]+) rate "
-                 r"evaluations each\)", text, re.M)
+                 r"evaluations each; the \d+ with a stick phase take [0-9.e+-]+ % of them\)",
+                 text, re.M)
 assert path, text
 assert 0 < float(path.group(1)) < exact, ("evaluations each, path vs exact", path.group(1), exact)
 ' "$work/grippy.out"

@@ -119,11 +119,12 @@ void printTabulatedPromise(const BenchRow& tabulated, std::size_t impacts) {
             << impacts << " impacts answered from the table, the rest solved exactly at tolerance "
             << tabulated.setting.exact_tolerance;
   const std::size_t solved = impacts - static_cast<std::size_t>(tabulated.table_answers);
-  if (solved > 0) {  // their cost: the table's answers take no rate evaluations
-    std::cout << " (" << std::setprecision(4)
-              << tabulated.evaluations_per_impact * static_cast<double>(impacts) /
-                     static_cast<double>(solved)
-              << " rate evaluations each)";
+  const double evaluations = tabulated.evaluations_per_impact * static_cast<double>(impacts);
+  if (solved > 0 && evaluations > 0) {  // their cost: the table's answers take no rate evaluations
+    std::cout << " (" << std::setprecision(4) << evaluations / static_cast<double>(solved)
+              << " rate evaluations each; the " << tabulated.stick_impacts
+              << " with a stick phase take " << std::setprecision(3)
+              << 100 * tabulated.stick_evaluations / evaluations << " % of them)";
   }
   std::cout << "; " << std::setprecision(3);
   if (tabulated.median_ns > 0) std::cout << tabulated.median_ns << " ns median; ";

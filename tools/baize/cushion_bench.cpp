@@ -65,12 +65,19 @@ struct BenchImpact {
   bool timed;                       // of the wide set: median_ns is taken over these
 };
 
-// Adds one scored impact to the row's error, evaluation and promise tallies (evaluations: the
-// exact solver's rate evaluations, the paper scheme's steps).
+// Adds one scored impact to the row's error, evaluation, stick and promise tallies (evaluations:
+// the exact solver's rate evaluations, the paper scheme's steps).
 // A NaN error counts as above the promise and becomes the largest (and stays so).
 void tally(const physics::CushionImpactResult& result, double error, BenchRow* row) {
   if (!std::isnan(row->max_error) && !(error <= row->max_error)) row->max_error = error;
   row->evaluations_per_impact += static_cast<double>(result.rhs_evaluations);
+  const bool sticks = std::any_of(
+      result.contact_changes.begin(), result.contact_changes.end(),
+      [](const physics::ContactChange& c) { return c.mode == physics::ContactMode::Stick; });
+  if (sticks) {
+    ++row->stick_impacts;
+    row->stick_evaluations += static_cast<double>(result.rhs_evaluations);
+  }
   row->above_half_promise += !(error <= kHalfPromiseShare * kExactPromise);
   row->above_promise += !(error <= kExactPromise);
 }

@@ -57,6 +57,10 @@ struct BenchRow {
   double max_error = 0;  // as defined above, dimensionless
   double p999_error = 0;  // the 99.9th percentile of the impacts' errors
   int table_answers = 0;  // the tabulated path: impacts answered from the table
+  // The impacts whose solution has a contact stick at some point, and their rate evaluations
+  // (summed): the stretches around a stick cost the exact solver most.
+  int stick_impacts = 0;
+  double stick_evaluations = 0;
   // Over every impact scored: the rate evaluations (exact solver) or steps (paper scheme) per
   // impact, and how many impacts lie above half the promise and above it.
   double evaluations_per_impact = 0;
