@@ -29,7 +29,8 @@ void requireScalesWithSpeed(const CushionParams& params) {
 constexpr double kNodeTolerance = 1e-12;
 // The largest error, in V0 (velocities) and V0/R (spins, as R w), a kept cell may show at its check
 // points. A thousandth of the exact solver's 1e-9 V0 promise would cost many more cells; a tenth
-// of the 1e-8 V0 this path promises leaves room for the error between the check points.
+// of the 1e-8 V0 this table promises leaves room for the error between the check points. (The
+// default path promises more loosely, kTabulatedPromise: its fallback's error sets that.)
 constexpr double kCellCheckError = 1e-9;
 // Splits below a root cell before a cell is marked for the exact solver: its side is then 1/32 of
 // a root cell's, so the cells marked along a kink hold a small share of the plane.

@@ -321,8 +321,8 @@ assert paper[3] < paper[0] / 50, paper
 assert error["exact default"] <= 1e-9, error
 assert error["exact tol=1e-12"] < error["exact tol=1e-08"] < error["exact tol=1e-06"], error
 assert error["exact default"] < paper[3], error
-# The default path keeps its promise (1e-8 V0).
-assert error["tabulated default"] <= 1e-8, error
+# The default path keeps its promise (1e-6 V0).
+assert error["tabulated default"] <= 1e-6, error
 # The stdout table is the CSV.
 with open(sys.argv[2]) as f:
     printed = f.read()
@@ -369,7 +369,7 @@ assert shots["defaultexact"] < shots["N=50000paper"] < shots["N=100paper"], shot
 ' "$work/bench_pool.csv" "$work/bench_shots.csv"
 grep -qE "^exact default: [0-9]+\.[0-9] evaluations per impact; [0-9]+ of [0-9]+ impacts above 5e-10 V0, 0 above the promised 1e-9 V0 \(kept\)$" \
   "$work/bench_shots.out" || fail "the shots bench does not report the exact solver's promise: $(grep "exact default" "$work/bench_shots.out")"
-grep -qE "^tabulated default \(the default path\): [1-9][0-9]* of [0-9]+ impacts answered from the table, the rest solved exactly at tolerance 3e-10 \([0-9.e+]+ rate evaluations each; the [0-9]+ with a stick phase take [0-9.e+-]+ % of them\); [0-9.e+-]+ ns median; largest error [0-9.e+-]+ V0, 99.9th percentile [0-9.e+-]+ V0; promised 1e-8 V0 \(kept\)$" \
+grep -qE "^tabulated default \(the default path\): [1-9][0-9]* of [0-9]+ impacts answered from the table, the rest solved exactly at tolerance 1e-08 \([0-9.e+]+ rate evaluations each; the [0-9]+ with a stick phase take [0-9.e+-]+ % of them\); [0-9.e+-]+ ns median; largest error [0-9.e+-]+ V0, 99.9th percentile [0-9.e+-]+ V0; promised 1e-6 V0 \(kept\)$" \
   "$work/bench_shots.out" || fail "the shots bench does not report the default path's promise: $(grep "tabulated default" "$work/bench_shots.out")"
 # The impacts left to the exact solver that have a stick phase: no more of them than were left, and
 # their share of the evaluations a percentage.
@@ -399,7 +399,7 @@ split = re.search(r"^tabulated default \(the default path\): (\d+) of (\d+) impa
 assert split and 0 < int(split.group(1)) < int(split.group(2)) == len(contacts), out
 assert "cushion: M 0.17 kg, R 0.028575 m, h 0.03629 m, e_e 0.74, mu_w 0.14, mu_s 0.2" in out, out
 shots = {r["setting"] + r["solver"]: float(r["max_error"]) for r in rows(sys.argv[3])}
-assert shots["defaultexact"] <= 1e-9 and shots["defaulttabulated"] <= 1e-8, shots
+assert shots["defaultexact"] <= 1e-9 and shots["defaulttabulated"] <= 1e-6, shots
 ' "$work/bench_scene.out" "$work/break.json" "$work/bench_scene.csv"
 cat >"$work/lively_break.json" <<'JSON'
 {"table": "pool-9ft", "ball_set": "pool", "rack": {"name": "9-ball"},
@@ -446,7 +446,7 @@ import re
 text = open(sys.argv[1]).read()
 exact = float(re.search(r"^exact default: ([0-9.]+) evaluations per impact", text, re.M).group(1))
 path = re.search(r"^tabulated default \(the default path\): 0 of 10 impacts answered from the "
-                 r"table, the rest solved exactly at tolerance 3e-10 \(([0-9.e+]+) rate "
+                 r"table, the rest solved exactly at tolerance 1e-08 \(([0-9.e+]+) rate "
                  r"evaluations each; the \d+ with a stick phase take [0-9.e+-]+ % of them\)",
                  text, re.M)
 assert path, text
@@ -454,7 +454,7 @@ assert 0 < float(path.group(1)) < exact, ("evaluations each, path vs exact", pat
 ' "$work/grippy.out"
 # The default path keeps its own promise on both sets, at its looser tolerance.
 for run in spin_a grippy; do
-  grep -qE "^tabulated default \(the default path\): .*; promised 1e-8 V0 \(kept\)$" "$work/$run.out" ||
+  grep -qE "^tabulated default \(the default path\): .*; promised 1e-6 V0 \(kept\)$" "$work/$run.out" ||
     fail "$run: the default path's promise line: $(grep '^tabulated default' "$work/$run.out")"
 done
 check_python '

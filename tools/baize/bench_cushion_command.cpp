@@ -13,6 +13,7 @@
 
 #include "engine/io/scene.h"
 #include "engine/play/random_shots.h"
+#include "physics/cushion_tabulated_solver.h"
 #include "physics/value_text.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
@@ -114,7 +115,7 @@ void printPromise(const BenchRow& exact, int impacts) {
 
 // The default path's promise line (its median time only where it was timed).
 void printTabulatedPromise(const BenchRow& tabulated, std::size_t impacts) {
-  const bool kept = tabulated.max_error <= kTabulatedPromise;
+  const bool kept = tabulated.max_error <= physics::kTabulatedPromise;
   std::cout << "tabulated default (the default path): " << tabulated.table_answers << " of "
             << impacts << " impacts answered from the table, the rest solved exactly at tolerance "
             << tabulated.setting.exact_tolerance;
@@ -129,7 +130,7 @@ void printTabulatedPromise(const BenchRow& tabulated, std::size_t impacts) {
   std::cout << "; " << std::setprecision(3);
   if (tabulated.median_ns > 0) std::cout << tabulated.median_ns << " ns median; ";
   std::cout << "largest error " << tabulated.max_error << " V0, 99.9th percentile "
-            << tabulated.p999_error << " V0; promised " << exponentText(kTabulatedPromise)
+            << tabulated.p999_error << " V0; promised " << exponentText(physics::kTabulatedPromise)
             << " V0 (" << (kept ? "kept" : "NOT kept") << ")\n";
 }
 

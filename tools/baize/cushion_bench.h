@@ -47,9 +47,6 @@ constexpr double kExactPromise = 1e-9;
 // The share of the promise whose count the bench reports besides the promise's own: how close to it
 // the impacts come.
 constexpr double kHalfPromiseShare = 0.5;
-// The tabulated path's promise: each outgoing velocity within this of the converged solution, in
-// units of V0 (physics/cushion_rolling_surface.h).
-constexpr double kTabulatedPromise = 1e-8;
 
 struct BenchRow {
   SolverSetting setting;

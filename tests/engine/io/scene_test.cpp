@@ -28,9 +28,9 @@ using ::testing::Not;
 // The bound on overlap at any event (m): rounding of positions of order 1 m, with room.
 constexpr double kOverlapTolerance_m = 1e-9;
 // See NineBallBreakIsPinnedBitForBit. Changes only when the arithmetic changes on purpose (last:
-// the default cushion path's exact fallback takes its tolerance per step, not per unit step; the
-// break moved by under 2.7e-9 s and 7.1e-10 m).
-constexpr std::uint64_t kPinnedNineBallBreakHash = 15607150676541402636ULL;
+// the default cushion path's exact fallback solves at tolerance 1e-8, its promise 1e-6 V0; the
+// break moved by under 6.9e-7 s and 5.7e-8 m).
+constexpr std::uint64_t kPinnedNineBallBreakHash = 13110553879047149433ULL;
 
 std::string sceneError(const nlohmann::json& document) {
   try {
@@ -633,8 +633,8 @@ TEST(ScenePhysics, PhysicsEchoReadsBackToTheSameParameters) {
 // The speed-dependent restitution in a scene: a ball rolling head-on into the foot cushion above
 // the knee comes back slower than with e_e constant; a knee above the impact changes nothing, to
 // the bit; the default model with the law solves the impact exactly (it cannot use its table of
-// rolling impacts, which scale with speed), within its promise of 1e-8 V0 of the exact model at the
-// same tolerance (the physics test pins it to the exact solver with the fallback's options); the
+// rolling impacts, which scale with speed), within its promise (physics::kTabulatedPromise) of the
+// exact model at the same tolerance (the physics test pins it to the exact solver with the fallback's options); the
 // echo carries the law and reads back.
 TEST(ScenePhysics, SpeedDependentRestitutionSlowsOnlyReboundsAboveTheKnee) {
   const auto law = [](double knee_mps) {
@@ -659,11 +659,12 @@ TEST(ScenePhysics, SpeedDependentRestitutionSlowsOnlyReboundsAboveTheKnee) {
   EXPECT_EQ(above.after[0].angular_velocity, plain.after[0].angular_velocity);
   const double v0 = plain.before[0].velocity.norm();
   const double radius = sceneFromJson(lonePoolBall(0.6, 4, {}), "test.json").ball_set.radius_m;
-  EXPECT_LE((tabulated.after[0].velocity - exact_as_tabulated.after[0].velocity).norm(), 1e-8 * v0);
+  EXPECT_LE((tabulated.after[0].velocity - exact_as_tabulated.after[0].velocity).norm(),
+            physics::kTabulatedPromise * v0);
   EXPECT_LE(
       radius * (tabulated.after[0].angular_velocity - exact_as_tabulated.after[0].angular_velocity)
                    .norm(),
-      1e-8 * v0);
+      physics::kTabulatedPromise * v0);
   const Scene scene = sceneFromJson(
       lonePoolBall(0.6, 4, {{"cushion", {{"restitution_speed_dependence", law(1.5)}}}}), "t.json");
   const nlohmann::json echo = physicsJson(simulationParamsFor(scene), cueStrikeParamsFor(scene));

@@ -1,6 +1,6 @@
 // Tests of cushion model "tabulated", the default: it takes the exact model's keys, echoes them
-// under its own name, and with a scene's overrides still answers within 1e-8 V0 of the exact
-// model with the same overrides.
+// under its own name, and with a scene's overrides still answers within its promise
+// (physics::kTabulatedPromise) of the exact model with the same overrides.
 #include "engine/models/cushion_tabulated_model.h"
 
 #include <gtest/gtest.h>
@@ -58,7 +58,7 @@ TEST(CushionTabulatedModel, SolvesWhatItsTableLeavesAtItsOwnToleranceUnlessGiven
   const physics::BallVelocity c = exact.cushion->resolve(exact, sliding);
   EXPECT_NE(a.v, c.v)
       << "the error share makes no difference here: the test cannot tell them apart";
-  EXPECT_LE(difference(a, c, tabulated.ball.radius_m), 1e-8 * speed);
+  EXPECT_LE(difference(a, c, tabulated.ball.radius_m), physics::kTabulatedPromise * speed);
 }
 
 TEST(CushionTabulatedModel, OverriddenParametersGiveTheExactModelsAnswers) {
@@ -76,7 +76,7 @@ TEST(CushionTabulatedModel, OverriddenParametersGiveTheExactModelsAnswers) {
       const BallVelocity in = physics::incomingBall(speed, 1.1, topspin, 0.3 * speed / radius);
       EXPECT_LE(difference(tabulated.cushion->resolve(tabulated, in),
                            exact.cushion->resolve(exact, in), radius),
-                1e-8 * speed)
+                physics::kTabulatedPromise * speed)
           << overrides.dump() << " topspin " << topspin;
     }
   }
