@@ -13,6 +13,10 @@
 
 namespace baize::physics {
 
+// The exact solver's promise: at its default tolerance (ExactSolverOptions), each outgoing velocity
+// within this of the converged solution, in units of V0 (spins as R w).
+constexpr double kExactPromise = 1e-9;
+
 struct ExactSolverOptions {
   // Error allowed, relative to the velocity scale |v| + R |w| (and the matching impulse and work
   // scales), per share of the impact's impulse (error per unit step; see min_error_share).

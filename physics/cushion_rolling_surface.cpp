@@ -29,8 +29,7 @@ void requireScalesWithSpeed(const CushionParams& params) {
 constexpr double kNodeTolerance = 1e-12;
 // The largest error, in V0 (velocities) and V0/R (spins, as R w), a kept cell may show at its check
 // points. A thousandth of the exact solver's 1e-9 V0 promise would cost many more cells; a tenth
-// of the 1e-8 V0 this table promises leaves room for the error between the check points. (The
-// default path promises more loosely, kTabulatedPromise: its fallback's error sets that.)
+// of kRollingTablePromise leaves room for the error between the check points.
 constexpr double kCellCheckError = 1e-9;
 // Splits below a root cell before a cell is marked for the exact solver: its side is then 1/32 of
 // a root cell's, so the cells marked along a kink hold a small share of the plane.
@@ -170,7 +169,8 @@ void CushionRollingSurface::build(Cell* cell) {
   cell->coefficients.resize(kOutputs);
   for (int k = 0; k < kNodes; ++k)
     for (int l = 0; l < kNodes; ++l)
-      values[k][l] = exactOutputs(params_, cell->alphaAt(nodePoint(k)), cell->sigmaAt(nodePoint(l)));
+      values[k][l] =
+          exactOutputs(params_, cell->alphaAt(nodePoint(k)), cell->sigmaAt(nodePoint(l)));
   for (int i = 0; i < kNodes; ++i) {
     for (int j = 0; j < kNodes; ++j) {
       const double weight = (i == 0 ? 1.0 : 2.0) * (j == 0 ? 1.0 : 2.0) / (kNodes * kNodes);
@@ -261,8 +261,8 @@ std::optional<BallVelocity> CushionRollingSurface::answer(const BallVelocity& in
   const double spin_unit = speed / params_.radius_m;  // V0 / R
   BallVelocity after;
   after.v = Eigen::Vector3d(sign * speed * out[0], speed * out[1], 0);
-  after.w = Eigen::Vector3d(spin_unit * out[2], sign * spin_unit * out[3],
-                            sign * spin_unit * out[4]);
+  after.w =
+      Eigen::Vector3d(spin_unit * out[2], sign * spin_unit * out[3], sign * spin_unit * out[4]);
   return after;
 }
 

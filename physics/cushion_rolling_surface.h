@@ -12,8 +12,9 @@
 // kMaxDepth; one that still misses it (a stick or slip onset crossing it, where the outcome has a
 // kink) is marked, and its impacts go to the exact solver, as does every ball that is not rolling
 // or lies outside the plane's covered part. The table covers sidespin >= 0 and answers the rest
-// through the mirror image, so mirror-image impacts get mirror-image answers. Built lazily, so a run pays only for the cells its
-// impacts touch; cached per parameter set for the process (rollingSurfaceFor).
+// through the mirror image, so mirror-image impacts get mirror-image answers. Built lazily, so a
+// run pays only for the cells its impacts touch; cached per parameter set for the process
+// (rollingSurfaceFor).
 #pragma once
 
 #include <array>
@@ -35,6 +36,11 @@ struct RollingSurfaceStats {
   long exact_solves = 0;     // exact solutions spent on building
   double build_seconds = 0;  // wall time spent building
 };
+
+// The table's promise: each answer within this of the converged solution, in V0 (velocities) and
+// V0/R (spins, as R w). (The default path, which also solves the impacts the table does not
+// answer, promises more loosely: kTabulatedPathPromise in cushion_tabulated_solver.h.)
+constexpr double kRollingTablePromise = 1e-8;
 
 class CushionRollingSurface {
  public:

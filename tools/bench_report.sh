@@ -103,6 +103,11 @@ def table(path):
 def text(path, skip_prefix=None):
     return [l.rstrip() for l in open(path) if l.strip() and not (skip_prefix and l.startswith(skip_prefix))]
 
+def promise_lines(name):
+    """A `baize bench cushion` run's header and promise lines, as a code block."""
+    return [f"    {l}" for l in text(f"{work}/{name}.txt")
+            if l.startswith(("baize bench cushion:", "exact default:", "tabulated default"))]
+
 cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), platform.processor())
 load = open("/proc/loadavg").read().split()[:3]
 shots = {r["scene"]: r for r in csv.DictReader(open(f"{work}/shots.csv"))}
@@ -163,25 +168,22 @@ doc = [
     "",
     table(f"{work}/cushion-break.csv"),
     "",
-] + [f"    {l}" for l in text(f"{work}/cushion-break.txt")
-     if l.startswith(("baize bench cushion:", "exact default:", "tabulated default"))] + [
+] + promise_lines("cushion-break") + [
     "",
-    "### The impacts of play (`--from-shots 40000`)",
+    "### The impacts of play (`--from-shots`)",
     "",
-    "Every cushion and jaw impact of 40,000 of `baize bench shots`' random single shots (over",
-    "100,000 impacts), each also solved at the reference tolerance: the default path's largest",
-    "error and 99.9th percentile against its promise.",
+    "Every cushion and jaw impact of the first of `baize bench shots`' random single shots (the",
+    "first line says how many), each also solved at the reference tolerance: the default path's",
+    "largest error and 99.9th percentile against its promise.",
     "",
-] + [f"    {l}" for l in text(f"{work}/cushion-play.txt")
-     if l.startswith(("baize bench cushion:", "exact default:", "tabulated default"))] + [
+] + promise_lines("cushion-play") + [
     "",
     "### Spin about every axis, grippy cushions (`--set spinning`, `--set grippy`)",
     "",
     "The promises on impacts the table cannot answer: the exact solver at its default, and the",
     "default path at its own tolerance, against the converged reference (not timed).",
     "",
-] + [f"    {l}" for s in ("spinning", "grippy") for l in text(f"{work}/cushion-{s}.txt")
-     if l.startswith(("baize bench cushion:", "exact default:", "tabulated default"))] + [
+] + promise_lines("cushion-spinning") + promise_lines("cushion-grippy") + [
     "",
     "## Rendering (`baize bench render`)",
     "",

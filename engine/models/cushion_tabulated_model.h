@@ -2,7 +2,7 @@
 // balls answered from the parameter set's table of exact solutions
 // (physics/cushion_rolling_surface.h) and every other impact solved by the exact solver at
 // physics::kTabulatedFallbackTolerance, per step (physics::tabulatedFallbackOptions), all within
-// physics::kTabulatedPromise (1e-6 V0) of the converged solution.
+// physics::kTabulatedPathPromise (1e-6 V0) of the converged solution.
 #pragma once
 
 #include "engine/models/cushion_exact_model.h"

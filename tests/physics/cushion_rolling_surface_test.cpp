@@ -1,4 +1,4 @@
-// Tests of the rolling balls' cushion table: its answers lie within the promised 1e-8 V0 of the
+// Tests of the rolling balls' cushion table: its answers lie within its promise (1e-8 V0) of the
 // exact solver at its tightest tolerance, it answers rolling balls only and only inside its plane,
 // mirror images get mirror answers to the bit, answers scale with V0, each parameter set has its
 // own table, and threads answering at once get the answers of one thread.
@@ -20,9 +20,6 @@ namespace {
 using test::degrees;
 using test::mirrored;
 using test::velocityDifference;
-
-// The table's promise, in V0.
-constexpr double kPromise = 1e-8;
 
 CushionParams poolCushion() { return test::poolTableCushion(); }
 
@@ -47,15 +44,16 @@ TEST(CushionRollingSurface, AnswersRollingBallsWithinItsPromise) {
     const std::optional<BallVelocity> answer = table.answer(in);
     ASSERT_TRUE(answer.has_value()) << "impact " << i;
     const double v0 = std::hypot(in.v.x(), in.v.y());
-    EXPECT_LE(velocityDifference(*answer, exactAnswer(p, in), p.radius_m), kPromise * v0)
+    EXPECT_LE(velocityDifference(*answer, exactAnswer(p, in), p.radius_m),
+              kRollingTablePromise * v0)
         << "impact " << i;
     EXPECT_EQ(answer->v.z(), 0.0);
   }
   const RollingSurfaceStats stats = table.stats();
   EXPECT_GT(stats.cells_kept, 0);
   EXPECT_GE(stats.cells_built, stats.cells_kept + stats.cells_to_exact);
-  EXPECT_GE(stats.exact_solves, stats.cells_built * CushionRollingSurface::kNodes *
-                                    CushionRollingSurface::kNodes);
+  EXPECT_GE(stats.exact_solves,
+            stats.cells_built * CushionRollingSurface::kNodes * CushionRollingSurface::kNodes);
 }
 
 TEST(CushionRollingSurface, LeavesOtherBallsToTheExactSolver) {
@@ -109,7 +107,8 @@ TEST(CushionRollingSurface, EachParameterSetHasItsOwnTable) {
   const BallVelocity in = rolling(lively, 1.5, degrees(80), 0.2);
   const std::optional<BallVelocity> answer = rollingSurfaceFor(lively).answer(in);
   ASSERT_TRUE(answer.has_value());
-  EXPECT_LE(velocityDifference(*answer, exactAnswer(lively, in), lively.radius_m), kPromise * 1.5);
+  EXPECT_LE(velocityDifference(*answer, exactAnswer(lively, in), lively.radius_m),
+            kRollingTablePromise * 1.5);
   CushionParams bad = p;
   bad.restitution = 2;
   EXPECT_THROW(rollingSurfaceFor(bad), std::invalid_argument);

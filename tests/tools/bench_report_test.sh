@@ -15,7 +15,8 @@ out=$(bash "$root/tools/bench_report.sh" --quick --baize "$baize" --out "$work/b
 grep -q "^wrote $work/bench.md: Random single shots: " <<<"$out" || fail "output: $out"
 for part in "- Commit: " "- Machine: " "## Whole shots" "| 9-ball-break |" "## Accuracy against run time" \
   "| event | exact |" "## The cushion solvers" "| exact | default |" "### The 9-ball break's impacts" \
-  "impacts of assets/scenes/9-ball-break.json" "impacts answered from the table" "## Rendering" "bench-accuracy.png" \
+  "impacts of assets/scenes/9-ball-break.json" "impacts answered from the table" "### The impacts of play" \
+  "cushion and jaw impacts of 20 random single shots" "## Rendering" "bench-accuracy.png" \
   "## Game play" "| 9-ball | 1.00 | 2 |" "| snooker | 1.00 | 1 |" "## Python" "baize.simulate_many"; do
   grep -qF -- "$part" "$work/bench.md" || fail "the report has no '$part'"
 done

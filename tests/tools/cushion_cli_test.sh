@@ -321,7 +321,8 @@ assert paper[3] < paper[0] / 50, paper
 assert error["exact default"] <= 1e-9, error
 assert error["exact tol=1e-12"] < error["exact tol=1e-08"] < error["exact tol=1e-06"], error
 assert error["exact default"] < paper[3], error
-# The default path keeps its promise (1e-6 V0).
+# The default path keeps its promise (1e-6 V0); the tighter promise of its table is held by
+# tests/physics/cushion_rolling_surface_test.cpp.
 assert error["tabulated default"] <= 1e-6, error
 # The stdout table is the CSV.
 with open(sys.argv[2]) as f:

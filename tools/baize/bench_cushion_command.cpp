@@ -17,9 +17,9 @@
 #include "physics/value_text.h"
 #include "tools/baize/atomic_file.h"
 #include "tools/baize/cli_errors.h"
-#include "tools/baize/progress.h"
 #include "tools/baize/cushion_bench.h"
 #include "tools/baize/cushion_param_flags.h"
+#include "tools/baize/progress.h"
 
 namespace baize::tools {
 namespace {
@@ -107,15 +107,15 @@ void printPromise(const BenchRow& exact, int impacts) {
   std::ostringstream line;
   line << "exact default: " << std::fixed << std::setprecision(1) << exact.evaluations_per_impact
        << " evaluations per impact; " << exact.above_half_promise << " of " << impacts
-       << " impacts above " << exponentText(kHalfPromiseShare * kExactPromise) << " V0, "
-       << exact.above_promise << " above the promised " << exponentText(kExactPromise) << " V0 ("
-       << (exact.above_promise == 0 ? "kept" : "NOT kept") << ")\n";
+       << " impacts above " << exponentText(kHalfPromiseShare * physics::kExactPromise) << " V0, "
+       << exact.above_promise << " above the promised " << exponentText(physics::kExactPromise)
+       << " V0 (" << (exact.above_promise == 0 ? "kept" : "NOT kept") << ")\n";
   std::cout << line.str();
 }
 
 // The default path's promise line (its median time only where it was timed).
 void printTabulatedPromise(const BenchRow& tabulated, std::size_t impacts) {
-  const bool kept = tabulated.max_error <= physics::kTabulatedPromise;
+  const bool kept = tabulated.max_error <= physics::kTabulatedPathPromise;
   std::cout << "tabulated default (the default path): " << tabulated.table_answers << " of "
             << impacts << " impacts answered from the table, the rest solved exactly at tolerance "
             << tabulated.setting.exact_tolerance;
@@ -130,8 +130,9 @@ void printTabulatedPromise(const BenchRow& tabulated, std::size_t impacts) {
   std::cout << "; " << std::setprecision(3);
   if (tabulated.median_ns > 0) std::cout << tabulated.median_ns << " ns median; ";
   std::cout << "largest error " << tabulated.max_error << " V0, 99.9th percentile "
-            << tabulated.p999_error << " V0; promised " << exponentText(physics::kTabulatedPromise)
-            << " V0 (" << (kept ? "kept" : "NOT kept") << ")\n";
+            << tabulated.p999_error << " V0; promised "
+            << exponentText(physics::kTabulatedPathPromise) << " V0 ("
+            << (kept ? "kept" : "NOT kept") << ")\n";
 }
 
 // --set spinning or grippy: the exact solver at its default against the reference, no timing.
@@ -333,9 +334,10 @@ void addBenchCushionCommand(CLI::App& bench) {
                           "score the impacts of this many of `baize bench shots`' random single "
                           "shots instead of the seeded sets (their table's cushion)");
   CLI::Option* from_scene =
-      command->add_option("--from-scene", flags->from_scene,
-                          "score the impacts of this scene's shot (a break, say) instead of the "
-                          "seeded sets (its cushion, overrides included)")
+      command
+          ->add_option("--from-scene", flags->from_scene,
+                       "score the impacts of this scene's shot (a break, say) instead of the "
+                       "seeded sets (its cushion, overrides included)")
           ->check(notEmpty());
   CLI::Option* set =
       command

@@ -78,8 +78,8 @@ void tally(const physics::CushionImpactResult& result, double error, BenchRow* r
     ++row->stick_impacts;
     row->stick_evaluations += static_cast<double>(result.rhs_evaluations);
   }
-  row->above_half_promise += !(error <= kHalfPromiseShare * kExactPromise);
-  row->above_promise += !(error <= kExactPromise);
+  row->above_half_promise += !(error <= kHalfPromiseShare * physics::kExactPromise);
+  row->above_promise += !(error <= physics::kExactPromise);
 }
 
 // The reference outgoing state of an input, and how far the looser check solution lies from it.
@@ -177,7 +177,7 @@ std::vector<SolverSetting> benchSettings() {
     paper.paper_steps = steps;
     settings.push_back(paper);
   }
-  settings.push_back(SolverSetting{});  // the exact solver at its default tolerance
+  settings.push_back(SolverSetting{});     // the exact solver at its default tolerance
   settings.push_back(tabulatedDefault());  // the default path: rolling balls from the table
   for (double tolerance : {1e-6, 1e-8, 1e-10, 1e-12}) {
     SolverSetting exact;
@@ -266,8 +266,7 @@ PromiseReport scorePromise(const physics::CushionParams& params,
     const double largest_before = report.row.max_error;
     tally(result, error, &report.row);
     if (!sameBits(report.row.max_error, largest_before)) report.worst = i;
-    const physics::CushionImpactResult path =
-        solveCushionShot(own, inputs[i].incoming, tabulated);
+    const physics::CushionImpactResult path = solveCushionShot(own, inputs[i].incoming, tabulated);
     tabulated_errors.push_back(
         impactError(path.after, reference, own.radius_m, inputs[i].speed_mps));
     tally(path, tabulated_errors.back(), &report.tabulated);

@@ -41,17 +41,14 @@ int rollingBenchCount(int count);
 // paper N = 100, 1000, 5000, 50000; exact at its default and at tolerances 1e-6 ... 1e-12.
 std::vector<SolverSetting> benchSettings();
 
-// The exact solver's promise: at its default tolerance, each outgoing velocity within this of the
-// converged solution, in units of V0 (physics/cushion_exact_solver.h).
-constexpr double kExactPromise = 1e-9;
 // The share of the promise whose count the bench reports besides the promise's own: how close to it
 // the impacts come.
 constexpr double kHalfPromiseShare = 0.5;
 
 struct BenchRow {
   SolverSetting setting;
-  double median_ns = 0;  // median over the wide set's impacts of the time per impact, ns
-  double max_error = 0;  // as defined above, dimensionless
+  double median_ns = 0;   // median over the wide set's impacts of the time per impact, ns
+  double max_error = 0;   // as defined above, dimensionless
   double p999_error = 0;  // the 99.9th percentile of the impacts' errors
   int table_answers = 0;  // the tabulated path: impacts answered from the table
   // The impacts whose solution has a contact stick at some point, and their rate evaluations

@@ -633,9 +633,9 @@ TEST(ScenePhysics, PhysicsEchoReadsBackToTheSameParameters) {
 // The speed-dependent restitution in a scene: a ball rolling head-on into the foot cushion above
 // the knee comes back slower than with e_e constant; a knee above the impact changes nothing, to
 // the bit; the default model with the law solves the impact exactly (it cannot use its table of
-// rolling impacts, which scale with speed), within its promise (physics::kTabulatedPromise) of the
-// exact model at the same tolerance (the physics test pins it to the exact solver with the fallback's options); the
-// echo carries the law and reads back.
+// rolling impacts, which scale with speed): it and the exact model at the same tolerance lie within
+// the path's promise (physics::kTabulatedPathPromise) of each other (the physics test pins it to
+// the exact solver with the fallback's options); the echo carries the law and reads back.
 TEST(ScenePhysics, SpeedDependentRestitutionSlowsOnlyReboundsAboveTheKnee) {
   const auto law = [](double knee_mps) {
     return nlohmann::json{{"knee_speed_mps", knee_mps}, {"falloff_exponent", 0.5}};
@@ -660,11 +660,11 @@ TEST(ScenePhysics, SpeedDependentRestitutionSlowsOnlyReboundsAboveTheKnee) {
   const double v0 = plain.before[0].velocity.norm();
   const double radius = sceneFromJson(lonePoolBall(0.6, 4, {}), "test.json").ball_set.radius_m;
   EXPECT_LE((tabulated.after[0].velocity - exact_as_tabulated.after[0].velocity).norm(),
-            physics::kTabulatedPromise * v0);
+            physics::kTabulatedPathPromise * v0);
   EXPECT_LE(
       radius * (tabulated.after[0].angular_velocity - exact_as_tabulated.after[0].angular_velocity)
                    .norm(),
-      physics::kTabulatedPromise * v0);
+      physics::kTabulatedPathPromise * v0);
   const Scene scene = sceneFromJson(
       lonePoolBall(0.6, 4, {{"cushion", {{"restitution_speed_dependence", law(1.5)}}}}), "t.json");
   const nlohmann::json echo = physicsJson(simulationParamsFor(scene), cueStrikeParamsFor(scene));

@@ -1,12 +1,13 @@
 // Tests of cushion model "tabulated", the default: it takes the exact model's keys, echoes them
 // under its own name, and with a scene's overrides still answers within its promise
-// (physics::kTabulatedPromise) of the exact model with the same overrides.
+// (physics::kTabulatedPathPromise) of the exact model with the same overrides.
 #include "engine/models/cushion_tabulated_model.h"
 
 #include <gtest/gtest.h>
 
 #include "engine/models/cushion_mathavan2010.h"
 #include "engine/models/model_registry.h"
+#include "physics/cushion_rolling_surface.h"
 #include "physics/cushion_tabulated_solver.h"
 #include "tests/engine/models/model_test_support.h"
 
@@ -58,7 +59,7 @@ TEST(CushionTabulatedModel, SolvesWhatItsTableLeavesAtItsOwnToleranceUnlessGiven
   const physics::BallVelocity c = exact.cushion->resolve(exact, sliding);
   EXPECT_NE(a.v, c.v)
       << "the error share makes no difference here: the test cannot tell them apart";
-  EXPECT_LE(difference(a, c, tabulated.ball.radius_m), physics::kTabulatedPromise * speed);
+  EXPECT_LE(difference(a, c, tabulated.ball.radius_m), physics::kTabulatedPathPromise * speed);
 }
 
 TEST(CushionTabulatedModel, OverriddenParametersGiveTheExactModelsAnswers) {
@@ -71,12 +72,15 @@ TEST(CushionTabulatedModel, OverriddenParametersGiveTheExactModelsAnswers) {
     exact_group["model"] = "exact";
     exact.cushion = cushionModel(exact_group);
     const double speed = 1.1, radius = tabulated.ball.radius_m;
-    // Rolling (from the table) and sliding (exact on both paths, with each path's options).
+    // Rolling (from the table, within its promise) and sliding (exact on both paths, with each
+    // path's options: within the path's promise).
     for (const double topspin : {speed / radius, 0.0}) {
       const BallVelocity in = physics::incomingBall(speed, 1.1, topspin, 0.3 * speed / radius);
+      const double promise =
+          topspin > 0 ? physics::kRollingTablePromise : physics::kTabulatedPathPromise;
       EXPECT_LE(difference(tabulated.cushion->resolve(tabulated, in),
                            exact.cushion->resolve(exact, in), radius),
-                physics::kTabulatedPromise * speed)
+                promise * speed)
           << overrides.dump() << " topspin " << topspin;
     }
   }
