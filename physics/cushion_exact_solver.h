@@ -20,11 +20,11 @@ constexpr double kExactPromise = 1e-9;
 struct ExactSolverOptions {
   // Error allowed, relative to the velocity scale |v| + R |w| (and the matching impulse and work
   // scales), per share of the impact's impulse (error per unit step; see min_error_share).
-  // Accepted: [1e-14, 1e-6]. The default keeps output velocities within 1e-9 V0 of the converged
-  // solution: over the 12000 seeded impacts of `baize bench cushion --impacts 8000` (wide and
-  // rolling sets) the largest error is 1.9e-10 V0 on the paper's snooker cushion and 4.95e-10 V0 on
-  // the 9 ft pool table's (tests and the bench check it on smaller sets); over the 16,180 impacts
-  // of 5000 random single shots (`baize bench cushion --from-shots 5000`) it is 3.5e-10 V0.
+  // Accepted: [1e-14, 1e-6]. The default keeps output velocities within kExactPromise of the
+  // converged solution: over the 12000 seeded impacts of `baize bench cushion --impacts 8000` (wide
+  // and rolling sets) the largest error is 1.9e-10 V0 on the paper's snooker cushion and 4.95e-10
+  // V0 on the 9 ft pool table's (tests and the bench check it on smaller sets); over the 16,180
+  // impacts of 5000 random single shots (`baize bench cushion --from-shots 5000`) it is 3.5e-10 V0.
   double tolerance = 3e-11;
   // The smallest share of the impact's impulse scale (M times the velocity scale) a step's error
   // allowance is cut to: a step covering a share s of it may add s times the tolerance, but no

@@ -1,9 +1,9 @@
 // The default way to resolve a cushion impact of the Mathavan 2010 model: a rolling ball's impact
-// from its parameter set's table of exact solutions (cushion_rolling_surface.h), within 1e-8 V0 of
-// the exact solver, and every other impact from the exact solver (cushion_exact_solver.h) at a
-// looser tolerance: the path promises kTabulatedPathPromise. With a speed-dependent restitution
-// (impactScalesWithSpeed false) the table cannot answer, since it holds outcomes per unit speed:
-// every impact goes to the exact solver.
+// from its parameter set's table of exact solutions (cushion_rolling_surface.h), within
+// kRollingTablePromise of the exact solver, and every other impact from the exact solver
+// (cushion_exact_solver.h) at a looser tolerance: the path promises kTabulatedPathPromise. With a
+// speed-dependent restitution (impactScalesWithSpeed false) the table cannot answer, since it holds
+// outcomes per unit speed: every impact goes to the exact solver.
 #pragma once
 
 #include "physics/cushion_exact_solver.h"
