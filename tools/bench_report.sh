@@ -147,7 +147,8 @@ doc = [
     "",
     "## Accuracy against run time (`baize bench accuracy`)",
     "",
-    "Error of each engine's final positions against the exact event loop, and its time per shot.",
+    "Error of each engine's final positions and events against the exact event loop, and its "
+    "time per shot.",
     "",
     table(f"{work}/accuracy.csv"),
     "",

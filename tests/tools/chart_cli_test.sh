@@ -196,7 +196,7 @@ expect_error 2 "--png is required" chart bench-cushion "$work/bench.csv"
 # engine; the event loop's error of 0 is drawn on a floor, so the table is accepted as it is.
 "$baize" bench accuracy --shots 1 --repeat 1 --csv "$work/accuracy.csv" >/dev/null ||
   fail "bench accuracy exited $?"
-grep -q '^event,exact,[^,]*,0,0,all$' "$work/accuracy.csv" || fail "test setup: the event row has no error 0"
+grep -q '^event,exact,[^,]*,0,0,all,' "$work/accuracy.csv" || fail "test setup: the event row has no error 0"
 "$baize" chart bench-accuracy "$work/accuracy.csv" --png "$work/accuracy.png" --width 480 \
   --height 320 >"$work/out" || fail "chart bench-accuracy exited $?"
 grep -qxF "wrote $work/accuracy.png" "$work/out" || fail "no 'wrote' line for the accuracy chart"

@@ -198,17 +198,36 @@ struct Configuration {
   std::function<engine::SimulationParams(const Shot&)> prepare = nullptr;
 };
 
+// Whether two runs of a shot have the same events in the same order (kind, balls, cushion or
+// pocket), and if so the largest difference between their times, s (NaN when they differ).
+double largestEventShift(const engine::SimulationResult& a, const engine::SimulationResult& b) {
+  if (a.events.size() != b.events.size()) return NAN;
+  double shift = 0;
+  for (std::size_t i = 0; i < a.events.size(); ++i) {
+    const engine::Event &x = a.events[i], &y = b.events[i];
+    if (x.kind != y.kind || x.ball != y.ball || x.other != y.other || x.index != y.index)
+      return NAN;
+    shift = std::max(shift, std::abs(x.time_s - y.time_s));
+  }
+  return shift;
+}
+
 // One configuration on one shot.
 struct ShotScore {
   bool failed = false;  // the run threw: counted as a mismatch, left out of time and error
   double median_us = 0;
   double position_error_m = 0;  // largest final-position distance over balls on the table in both
   bool mismatch = false;
+  double event_shift_s = NAN;  // largestEventShift from the reference's events
 };
 
 struct Row {
   std::string engine, setting;
   double median_us = 0, position_error_m = 0, outcome_mismatch = 0;
+  // The largest final-position error over the shots; the share of shots whose events (kinds,
+  // balls, cushions, pockets, in order) differ from the reference's; over the others, the largest
+  // difference of an event's time (NaN when no shot has the reference's events).
+  double largest_position_error_m = 0, event_mismatch = 0, largest_event_shift_s = NAN;
   int failures = 0;
 };
 
@@ -218,34 +237,48 @@ Row aggregate(const Configuration& config, const std::vector<ShotScore>& scores,
   Row row{config.engine, config.setting};
   std::vector<double> times_us;
   double error_sum_m = 0;
-  int counted = 0, mismatches = 0;
+  int counted = 0, mismatches = 0, event_mismatches = 0;
   for (std::size_t k = 0; k < shots.size(); ++k) {
     if (!include(shots[k])) continue;
     ++counted;
     if (scores[k].failed) {
       ++row.failures;
       ++mismatches;
+      ++event_mismatches;
       continue;
     }
     times_us.push_back(scores[k].median_us);
     error_sum_m += scores[k].position_error_m;
+    row.largest_position_error_m = std::max(row.largest_position_error_m, scores[k].position_error_m);
     if (scores[k].mismatch) ++mismatches;
+    const double shift = scores[k].event_shift_s;
+    if (std::isnan(shift)) {
+      ++event_mismatches;
+    } else if (!(shift <= row.largest_event_shift_s)) {  // also the first: NaN compares false
+      row.largest_event_shift_s = shift;
+    }
   }
   row.median_us = times_us.empty() ? NAN : median(times_us);
   row.position_error_m = times_us.empty() ? NAN : error_sum_m / times_us.size();
+  if (times_us.empty()) row.largest_position_error_m = NAN;
   row.outcome_mismatch = counted > 0 ? static_cast<double>(mismatches) / counted : NAN;
+  row.event_mismatch = counted > 0 ? static_cast<double>(event_mismatches) / counted : NAN;
   return row;
 }
 
 void printTable(const std::vector<Row>& rows) {
   std::cout << std::left << std::setw(12) << "engine" << std::setw(12) << "setting" << std::right
-            << std::setw(14) << "median us" << std::setw(18) << "position error m" << std::setw(18)
-            << "outcome mismatch" << std::setw(10) << "failed" << '\n';
+            << std::setw(12) << "median us" << std::setw(18) << "position error m"
+            << std::setw(18) << "largest error m" << std::setw(18) << "outcome mismatch"
+            << std::setw(16) << "event mismatch" << std::setw(18) << "largest shift s"
+            << std::setw(8) << "failed" << '\n';
   for (const Row& r : rows) {
     std::cout << std::left << std::setw(12) << r.engine << std::setw(12) << r.setting << std::right
-              << std::setw(14) << std::setprecision(4) << r.median_us << std::setw(18)
-              << std::setprecision(3) << r.position_error_m << std::setw(18) << std::setprecision(3)
-              << r.outcome_mismatch << std::setw(10) << r.failures << '\n';
+              << std::setw(12) << std::setprecision(4) << r.median_us << std::setprecision(3)
+              << std::setw(18) << r.position_error_m << std::setw(18)
+              << r.largest_position_error_m << std::setw(18) << r.outcome_mismatch
+              << std::setw(16) << r.event_mismatch << std::setw(18) << r.largest_event_shift_s
+              << std::setw(8) << r.failures << '\n';
   }
 }
 
@@ -337,6 +370,7 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
       const engine::SimulationResult& ref = reference[k];
       const Outcome got = outcomeOf(*result, shots[k].cue), want = outcomeOf(ref, shots[k].cue);
       score.mismatch = !(got == want);
+      score.event_shift_s = largestEventShift(*result, ref);
       for (std::size_t i = 0; i < ref.final_balls.size(); ++i) {
         if (ref.final_balls[i].pocketed || result->final_balls[i].pocketed) continue;
         score.position_error_m = std::max(
@@ -370,11 +404,14 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
   // The column "shots" names the subset a row scores: "all", or "no-breaks" (the same without the
   // breaks, written when the set has breaks and other shots).
   std::ostringstream out;
-  out << "engine,setting,median_us,position_error_m,outcome_mismatch,shots\n";
+  out << "engine,setting,median_us,position_error_m,outcome_mismatch,shots,"
+         "largest_position_error_m,event_mismatch,largest_event_shift_s\n";
   const auto write_rows = [&](const std::vector<Row>& subset, const char* name) {
     for (const Row& r : subset) {
       out << r.engine << ',' << r.setting << ',' << std::setprecision(6) << r.median_us << ','
-          << r.position_error_m << ',' << r.outcome_mismatch << ',' << name << '\n';
+          << r.position_error_m << ',' << r.outcome_mismatch << ',' << name << ','
+          << r.largest_position_error_m << ',' << r.event_mismatch << ','
+          << r.largest_event_shift_s << '\n';
     }
   };
   write_rows(rows, "all");
@@ -385,9 +422,12 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
   printTable(rows);
   std::cout << "\nmedian us: median over shots of each shot's median wall time; position error: "
                "mean over shots of the largest final-position distance from the event loop's "
-               "(balls on the table in both); outcome mismatch: share of shots whose pocketed "
-               "balls or first "
-            << kComparedCueContacts << " cue-ball contacts differ from the event loop's.\n";
+               "(balls on the table in both), largest error: the largest over shots; outcome "
+               "mismatch: share of shots whose pocketed balls or first "
+            << kComparedCueContacts
+            << " cue-ball contacts differ from the event loop's; event mismatch: share of shots "
+               "whose events (kinds, balls, cushions and pockets, in order) differ from it, "
+               "largest shift: over the others, the largest difference of an event's time.\n";
   if (both_sets) {
     std::cout << "\nThe same without the " << racks
               << " breaks (frozen racks: their outcome hangs on 100 nm gaps between the racked "
