@@ -412,8 +412,11 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
   const std::vector<Configuration> configs = configurations();
   std::vector<std::vector<ShotScore>> scores(configs.size(), std::vector<ShotScore>(shots.size()));
   Progress progress("runs (configuration x shot)", static_cast<long>(configs.size() * shots.size()));
-  for (std::size_t c = 0; c < configs.size(); ++c) {
-    for (std::size_t k = 0; k < shots.size(); ++k, progress.advance())
+  // Shot by shot, every configuration in turn: the times of one shot are taken a few seconds
+  // apart rather than the whole bench apart, so a change in the machine's speed during the bench
+  // does not favour one configuration.
+  for (std::size_t k = 0; k < shots.size(); ++k) {
+    for (std::size_t c = 0; c < configs.size(); ++c, progress.advance())
       scores[c][k] = scoreShot(configs[c], shots[k], reference[k], flags);
   }
   std::vector<Row> rows, without_breaks;
