@@ -147,7 +147,7 @@ doc = [
     "",
     "## Accuracy against run time (`baize bench accuracy`)",
     "",
-    "Error of each engine's final positions and events against the exact event loop, and its "
+    "Error of each engine's final positions and contacts against the exact event loop, and its "
     "time per shot.",
     "",
     table(f"{work}/accuracy.csv"),

@@ -159,45 +159,6 @@ std::vector<Shot> shotSet() {
   return plain;
 }
 
-// What is compared between engines: the pocketed balls and the cue ball's first contacts.
-struct Outcome {
-  std::set<int> pocketed;
-  std::vector<std::string> cue_contacts;
-  bool operator==(const Outcome& o) const {
-    return pocketed == o.pocketed && cue_contacts == o.cue_contacts;
-  }
-};
-
-Outcome outcomeOf(const engine::SimulationResult& r, int cue) {
-  Outcome o;
-  for (std::size_t i = 0; i < r.final_balls.size(); ++i)
-    if (r.final_balls[i].pocketed) o.pocketed.insert(static_cast<int>(i));
-  for (const engine::Event& e : r.events) {
-    if (o.cue_contacts.size() == kComparedCueContacts) break;
-    std::string token;
-    if (e.kind == engine::EventKind::BallBall && (e.ball == cue || e.other == cue)) {
-      token = "ball " + std::to_string(e.ball == cue ? e.other : e.ball);
-    } else if (e.ball == cue && e.kind != engine::EventKind::StateChange &&
-               e.kind != engine::EventKind::BallBall) {
-      token = std::string(engine::eventKindName(e.kind)) + " " + std::to_string(e.index);
-    }
-    if (!token.empty() && (o.cue_contacts.empty() || o.cue_contacts.back() != token))
-      o.cue_contacts.push_back(token);
-  }
-  return o;
-}
-
-using Simulator = std::function<engine::SimulationResult(const Shot&)>;
-
-// An engine and its setting. The setting's model change is made once per shot, before the timed
-// runs (`prepare`; none leaves the shot as it is): building a model from its parameters costs
-// about as much as a short shot, and it is not part of simulating one.
-struct Configuration {
-  std::string engine, setting;
-  Simulator run;
-  std::function<engine::SimulationParams(const Shot&)> prepare = nullptr;
-};
-
 // What a ball met, in order: each contact (another ball, a cushion, a jaw, a pocket) and when.
 // State changes are left out: the baselines do not record them.
 struct Contact {
@@ -215,6 +176,42 @@ std::vector<std::vector<Contact>> contactsByBall(const engine::SimulationResult&
   }
   return by_ball;
 }
+
+// What is compared between engines: the pocketed balls and the cue ball's first contacts.
+struct Outcome {
+  std::set<int> pocketed;
+  std::vector<std::string> cue_contacts;
+  bool operator==(const Outcome& o) const {
+    return pocketed == o.pocketed && cue_contacts == o.cue_contacts;
+  }
+};
+
+Outcome outcomeOf(const engine::SimulationResult& r, int cue) {
+  Outcome o;
+  for (std::size_t i = 0; i < r.final_balls.size(); ++i)
+    if (r.final_balls[i].pocketed) o.pocketed.insert(static_cast<int>(i));
+  const std::vector<std::vector<Contact>> contacts = contactsByBall(r);
+  for (const Contact& c : contacts[cue]) {
+    if (o.cue_contacts.size() == kComparedCueContacts) break;
+    const std::string token = c.kind == engine::EventKind::BallBall
+                                  ? "ball " + std::to_string(c.with)
+                                  : std::string(engine::eventKindName(c.kind)) + " " +
+                                        std::to_string(c.with);
+    if (o.cue_contacts.empty() || o.cue_contacts.back() != token) o.cue_contacts.push_back(token);
+  }
+  return o;
+}
+
+using Simulator = std::function<engine::SimulationResult(const Shot&)>;
+
+// An engine and its setting. The setting's model change is made once per shot, before the timed
+// runs (`prepare`; none leaves the shot as it is): building a model from its parameters costs
+// about as much as a short shot, and it is not part of simulating one.
+struct Configuration {
+  std::string engine, setting;
+  Simulator run;
+  std::function<engine::SimulationParams(const Shot&)> prepare = nullptr;
+};
 
 // Whether every ball meets the same things in the same order in both runs (the order between
 // balls may differ: two balls' contacts a moment apart swap with a small shift), and if so the
