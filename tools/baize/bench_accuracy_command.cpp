@@ -186,12 +186,18 @@ struct Outcome {
   }
 };
 
-Outcome outcomeOf(const engine::SimulationResult& r, int cue) {
-  Outcome o;
+// What a run is compared by: every ball's contacts and the outcome, listed once per run.
+struct RunSummary {
+  std::vector<std::vector<Contact>> contacts;  // contactsByBall
+  Outcome outcome;
+};
+
+RunSummary summarize(const engine::SimulationResult& r, int cue) {
+  RunSummary summary{contactsByBall(r), {}};
+  Outcome& o = summary.outcome;
   for (std::size_t i = 0; i < r.final_balls.size(); ++i)
     if (r.final_balls[i].pocketed) o.pocketed.insert(static_cast<int>(i));
-  const std::vector<std::vector<Contact>> contacts = contactsByBall(r);
-  for (const Contact& c : contacts[cue]) {
+  for (const Contact& c : summary.contacts[cue]) {
     if (o.cue_contacts.size() == kComparedCueContacts) break;
     const std::string token = c.kind == engine::EventKind::BallBall
                                   ? "ball " + std::to_string(c.with)
@@ -199,7 +205,7 @@ Outcome outcomeOf(const engine::SimulationResult& r, int cue) {
                                         std::to_string(c.with);
     if (o.cue_contacts.empty() || o.cue_contacts.back() != token) o.cue_contacts.push_back(token);
   }
-  return o;
+  return summary;
 }
 
 using Simulator = std::function<engine::SimulationResult(const Shot&)>;
@@ -216,8 +222,8 @@ struct Configuration {
 // Whether every ball meets the same things in the same order in both runs (the order between
 // balls may differ: two balls' contacts a moment apart swap with a small shift), and if so the
 // largest difference between the times of a contact, s; NaN when they differ.
-double largestContactShift(const engine::SimulationResult& a, const engine::SimulationResult& b) {
-  const std::vector<std::vector<Contact>> in_a = contactsByBall(a), in_b = contactsByBall(b);
+double largestContactShift(const std::vector<std::vector<Contact>>& in_a,
+                           const std::vector<std::vector<Contact>>& in_b) {
   if (in_a.size() != in_b.size()) return NAN;
   double shift = 0;
   for (std::size_t ball = 0; ball < in_a.size(); ++ball) {
@@ -343,10 +349,17 @@ std::vector<Configuration> configurations() {
   return list;
 }
 
+// The event loop's run of a shot, which every configuration is compared with.
+struct Reference {
+  engine::SimulationResult result;
+  RunSummary summary;
+};
+
 // One configuration on one shot against the reference run: timed runs after an untimed one (the
 // default path's table builds the cells a shot needs on its first impacts there).
-ShotScore scoreShot(const Configuration& config, const Shot& original,
-                    const engine::SimulationResult& reference, const BenchAccuracyFlags& flags) {
+ShotScore scoreShot(const Configuration& config, const Shot& original, const Reference& ref,
+                    const BenchAccuracyFlags& flags) {
+  const engine::SimulationResult& reference = ref.result;
   ShotScore score;
   std::vector<double> runs_us;
   std::optional<engine::SimulationResult> result;
@@ -370,9 +383,10 @@ ShotScore scoreShot(const Configuration& config, const Shot& original,
     return score;
   }
   score.median_us = median(runs_us);
-  const Outcome got = outcomeOf(*result, original.cue), want = outcomeOf(reference, original.cue);
+  const RunSummary run = summarize(*result, original.cue);
+  const Outcome &got = run.outcome, &want = ref.summary.outcome;
   score.mismatch = !(got == want);
-  score.contact_shift_s = largestContactShift(*result, reference);
+  score.contact_shift_s = largestContactShift(run.contacts, ref.summary.contacts);
   for (std::size_t i = 0; i < reference.final_balls.size(); ++i) {
     if (reference.final_balls[i].pocketed || result->final_balls[i].pocketed) continue;
     score.position_error_m = std::max(
@@ -403,8 +417,12 @@ void runBenchAccuracy(const BenchAccuracyFlags& flags) {
   std::vector<Shot> shots = shotSet();
   if (flags.shots > 0 && flags.shots < static_cast<int>(shots.size())) shots.resize(flags.shots);
 
-  std::vector<engine::SimulationResult> reference;
-  for (const Shot& s : shots) reference.push_back(engine::simulate(s.params, s.table, s.balls));
+  std::vector<Reference> reference;
+  for (const Shot& s : shots) {
+    engine::SimulationResult result = engine::simulate(s.params, s.table, s.balls);
+    RunSummary summary = summarize(result, s.cue);
+    reference.push_back({std::move(result), std::move(summary)});
+  }
 
   const std::vector<Configuration> configs = configurations();
   std::vector<std::vector<ShotScore>> scores(configs.size(), std::vector<ShotScore>(shots.size()));
