@@ -2,8 +2,9 @@
 // cushion_exact_solver.cpp): the ends of compression and restitution and a held contact's events
 // (its cone stops or starts holding it, its held law runs out, an approaching slip vanishes or
 // leaves its line), located on the length of the step that crossed them (Newton's method or
-// Illinois regula falsi, each trial a full Runge-Kutta step), polished by a Heun step, or landed on
-// from a step aimed at them by short third-order steps.
+// Illinois regula falsi, each trial a full Runge-Kutta step; a cone event first at its root along
+// the state's interpolant, then by secants), polished by a Heun step, or landed on from a step
+// aimed at them by short third-order steps.
 #pragma once
 
 #include <new>
@@ -61,6 +62,8 @@ struct Event {
   bool creep_end = false;     // a held contact sliding along phi* has to slip as its own slip says
   bool approach_end = false;  // an approaching slip has reached its zero (has vanished)
   bool approach_off = false;  // an approaching slip has left its line: it slips as it says
+  // Whether it is a held contact's cone event (the margin of its needed friction).
+  bool cone() const { return !phase_end && !creep_end && !approach_end && !approach_off; }
 };
 
 class EventLocation : public StepControl {

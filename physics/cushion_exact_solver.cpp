@@ -50,8 +50,9 @@
 // of the fastest-turning slip direction and at one turning scale |u| / |du/dtau| of each slipping
 // slip (beyond either the pair's estimate fails). The ends of compression
 // (v_y = 0) and restitution (W = (1 - e^2) W_c, eq. 17b), the instants a stuck contact breaks and
-// the end of a held law are events, located by Newton's method (or Illinois regula falsi) on the
-// step length, each trial a full Runge-Kutta step, and a short last correction one Heun step. The
+// the end of a held law are events, located by Newton's method (or Illinois regula falsi; a cone
+// event from its root along the state's interpolant, then by secants) on the step length, each
+// trial a full Runge-Kutta step, and a short last correction one Heun step. The
 // phase ends, across which the dynamics do not change, are usually aimed at instead: a step is cut
 // to end where they are predicted (extrapolated from the last step) and short third-order steps
 // land on them from there.
@@ -118,6 +119,10 @@ constexpr int kMaxMissedLandings = 2;
 // out of steps or contact changes.
 constexpr double kMinTolerance = 1e-14;
 constexpr double kMaxTolerance = 1e-6;
+// The longest step cap accepted, in time constants of a slip's direction: beyond about 6 a step
+// leaves the Dormand-Prince pair's stability region on the real axis, where the slip's direction
+// would oscillate instead of settling.
+constexpr double kMaxSlipDirectionTimeConstants = 5;
 // Logic guards, far above what the bounded equations need (an impact takes tens of steps and a few
 // contact changes).
 constexpr int kMaxSteps = 100000;
@@ -459,7 +464,7 @@ void ExactImpact::attemptStep(Cursor* at, const StepEvents& events, Attempt* att
 void ExactImpact::acceptOrShorten(Cursor* at, const Attempt& attempt) {
   const Step& step = attempt.step;
   if (!(step.error <= 1)) {
-    at->h *= stepFactor(step.error);
+    at->h *= rejectedStepFactor(step.error);
     return;
   }
   last_phase_value_ = attempt.phase_value;
@@ -641,6 +646,15 @@ void validateExactSolverOptions(const ExactSolverOptions& options) {
   if (!(options.min_error_share > 0 && options.min_error_share <= 1)) {
     rejectValue("exact solver's smallest error share", options.min_error_share,
                 "it must lie in (0, 1]");
+  }
+  if (!(options.step_safety > 0 && options.step_safety <= 1)) {
+    rejectValue("exact solver's step safety factor", options.step_safety, "it must lie in (0, 1]");
+  }
+  if (!(options.slip_direction_time_constants > 0 &&
+        options.slip_direction_time_constants <= kMaxSlipDirectionTimeConstants)) {
+    rejectValue("exact solver's step cap in slip direction time constants",
+                options.slip_direction_time_constants,
+                "it must lie in (0, " + valueText(kMaxSlipDirectionTimeConstants) + "]");
   }
   if (!(options.trace_spacing_Ns >= 0) || !std::isfinite(options.trace_spacing_Ns)) {
     rejectValue("trace spacing (N s)", options.trace_spacing_Ns, "it must be a finite number >= 0");

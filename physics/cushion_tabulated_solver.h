@@ -19,26 +19,40 @@ namespace baize::physics {
 // 1.8 times the simple rule's (`baize bench shots`).
 constexpr double kTabulatedPathPromise = 1e-6;
 
-// The exact solver's tolerance for the impacts the table does not answer. Over the 103,206 impacts
-// of 40,000 random single shots, the 29,172 the table leaves take 253.8 rate evaluations each and
-// the path's largest error is 2.0e-7 V0 (99.9th percentile 6.8e-8 V0), a fifth of the promise. On
-// 2,209 of those impacts, 3e-10 took 320.1 evaluations (largest 4.4e-9 V0, which kept 1e-8 V0),
-// and 3e-8 took 231.9 but reached 6.6e-7 V0, too near the promise (all with the error share
-// below).
+// The exact solver's tolerance for the impacts the table does not answer. Over the 77,538 impacts
+// of 30,000 random single shots, the 21,877 the table leaves take 227.4 rate evaluations each and
+// the path's largest error is 2.1e-7 V0 (99.9th percentile 8.5e-8 V0), a fifth of the promise
+// (against the exact solver at 1e-14, with the error share and step control below). 3e-10 took
+// 302.3 evaluations (largest 5.9e-9 V0, which would keep 1e-8 V0), and 3e-8 took 211.0 but
+// reached 1.7e-6 V0, beyond the promise.
 constexpr double kTabulatedFallbackTolerance = 1e-8;
 
 // The exact solver's smallest error share for those impacts: 1, an error per step. It keeps the
 // path's promise with fewer evaluations than the exact solver's 0.2, which its own tighter promise
-// needs: on the same 2,209 impacts at kTabulatedFallbackTolerance, 249.9 rate evaluations each
-// against 256.2 at 0.5 and 264.1 at 0.2, with largest errors of 9.7e-8, 1.2e-7 and 8.0e-8 V0.
+// needs: on the 2,209 of those impacts in the first 3000 shots, 223.4 rate evaluations each
+// against 229.9 at 0.5 and 241.2 at 0.2, with largest errors of 9.4e-8, 1.0e-7 and 8.1e-8 V0.
 constexpr double kTabulatedFallbackErrorShare = 1;
 
-// The options of the exact solver behind the table: its defaults, at kTabulatedFallbackTolerance
-// and kTabulatedFallbackErrorShare.
+// The step control of those impacts: bolder than the exact solver's, whose constants keep its
+// tighter promise. With an error per step the best safety factor is lower (the steps' errors add
+// up, and a rejection costs a whole step), and the steps may span more of a slip direction's time
+// constants (the estimate's misses there, 10 to 100 times a step's allowance, stay far below this
+// path's promise). On the 2,209 impacts of the first 3000 shots: 236.4 rate evaluations per impact
+// with the exact solver's pair (0.9, 2.75 time constants), 226.8 with 0.9 and 4, 223.4 with these;
+// on the 9-ball break's 5, 232.8, 226.2 and 221.0; on the 21,877 of 30,000 shots, 240.2 and
+// 227.4 (the first and the last), the largest error 2.1e-7 V0 at each. A cap of 5 took 224.3
+// there but reached 6.5e-7 V0, where the estimate failed; a safety factor of 0.7, 229.6.
+constexpr double kTabulatedFallbackStepSafety = 0.8;
+constexpr double kTabulatedFallbackSlipDirectionTimeConstants = 4;
+
+// The options of the exact solver behind the table: its defaults, at kTabulatedFallbackTolerance,
+// kTabulatedFallbackErrorShare and the step control above.
 inline ExactSolverOptions tabulatedFallbackOptions() {
   ExactSolverOptions options;
   options.tolerance = kTabulatedFallbackTolerance;
   options.min_error_share = kTabulatedFallbackErrorShare;
+  options.step_safety = kTabulatedFallbackStepSafety;
+  options.slip_direction_time_constants = kTabulatedFallbackSlipDirectionTimeConstants;
   return options;
 }
 

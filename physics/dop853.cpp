@@ -14,10 +14,9 @@ double stepFactor(double error, double safety, double min_factor, double max_fac
   return std::clamp(safety * std::pow(error, -1 / kErrorOrder), min_factor, max_factor);
 }
 
-// Newton on hermiteRoot's cubic: the central difference's half width, the convergence test (both
-// in the share of the step; far below any step's resolution, far above rounding of a cubic on
-// [0, 1]) and the iteration limit (bisection alone would need about 47 to reach the test).
-constexpr double kHermiteSlopeStep = 1e-7;
+// Newton on hermiteRoot's cubic: the convergence test (in the share of the step; far below any
+// step's resolution, far above rounding of a cubic on [0, 1]) and the iteration limit (bisection
+// alone would need about 47 to reach the test).
 constexpr double kHermiteRootTolerance = 1e-14;
 constexpr int kMaxHermiteIterations = 40;
 
@@ -27,15 +26,24 @@ double hermiteRoot(double g0, double d0, double g1, double d1) {
     const double h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
     return h00 * g0 + h10 * d0 + h01 * g1 + h11 * d1;
   };
+  auto slope = [&](double t) {
+    const double s00 = 6 * t * (t - 1), s10 = (1 - t) * (1 - 3 * t);
+    const double s01 = 6 * t * (1 - t), s11 = t * (3 * t - 2);
+    return s00 * g0 + s10 * d0 + s01 * g1 + s11 * d1;
+  };
   double lo = 0, hi = 1, t = g0 / (g0 - g1);
   for (int it = 0; it < kMaxHermiteIterations; ++it) {
     const double v = value(t);
+    if (v == 0) return t;
     (v > 0 ? lo : hi) = t;
-    const double slope =
-        (value(t + kHermiteSlopeStep) - value(t - kHermiteSlopeStep)) / (2 * kHermiteSlopeStep);
-    double next = slope != 0 ? t - v / slope : 0.5 * (lo + hi);
+    const double d = slope(t);
+    double next = d != 0 ? t - v / d : 0.5 * (lo + hi);
+    // Converged: the step is within rounding of the root. (Tested before the bracket, which the
+    // iterate itself has just become one end of: a step that rounds back onto it is no reason to
+    // bisect away from it.)
+    if (std::abs(next - t) < kHermiteRootTolerance) return t;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - t) < kHermiteRootTolerance) return next;
+    if (hi - lo < kHermiteRootTolerance) return next;
     t = next;
   }
   return t;

@@ -31,12 +31,14 @@ TEST(CushionStepControl, InverseEighthRootIsWithinItsPromise) {
 }
 
 TEST(CushionStepControl, StepFactorIsBoundedAndShrinksWithTheError) {
-  EXPECT_EQ(stepFactor(0), 3.0);  // no error: the largest growth
-  EXPECT_EQ(stepFactor(std::numeric_limits<double>::quiet_NaN()), 1.0 / 3);
-  EXPECT_EQ(stepFactor(1e30), 1.0 / 3);
-  EXPECT_NEAR(stepFactor(1), 0.9, 0.9 * kEighthRootRelative);  // the safety factor
-  EXPECT_NEAR(stepFactor(256), 0.45, 0.45 * kEighthRootRelative);
-  EXPECT_EQ(stepFactor(1e-30), 3.0);
+  for (const double safety : {0.9, 0.8}) {
+    EXPECT_EQ(stepFactor(0, safety), 2.0);  // no error: the largest growth
+    EXPECT_EQ(stepFactor(std::numeric_limits<double>::quiet_NaN(), safety), 1.0 / 3);
+    EXPECT_EQ(stepFactor(1e30, safety), 1.0 / 3);
+    EXPECT_NEAR(stepFactor(1, safety), safety, safety * kEighthRootRelative);  // the safety
+    EXPECT_NEAR(stepFactor(256, safety), safety / 2, safety / 2 * kEighthRootRelative);
+    EXPECT_EQ(stepFactor(1e-30, safety), 2.0);
+  }
 }
 
 TEST(CushionStepControl, ExtrapolatedRootOfALineAndOfACubic) {
@@ -57,10 +59,29 @@ TEST(CushionStepControl, ControllerFollowsTheTrendOfAcceptedSteps) {
   const CushionParams p = test::snookerCushion();
   StepControl control(p, test::spinningBall(p), test::partsOptions());
   // The first accepted step: the plain factor.
-  EXPECT_EQ(control.acceptedStepFactor(1.0, 0.5), stepFactor(0.5));
+  EXPECT_EQ(control.acceptedStepFactor(1.0, 0.5), control.stepFactor(0.5));
   // The next, shorter by half with the same error: the steps shrink, and so does the next one.
   const double factor = control.acceptedStepFactor(0.5, 0.5);
-  EXPECT_NEAR(factor, stepFactor(0.5) * 0.5, 1e-12);
+  EXPECT_NEAR(factor, control.stepFactor(0.5) * 0.5, 1e-12);
+}
+
+TEST(CushionStepControl, StepAfterARetryDoesNotGrow) {
+  const CushionParams p = test::snookerCushion();
+  StepControl control(p, test::spinningBall(p), test::partsOptions());
+  constexpr double kSmallError = 1e-6;  // alone, grows the step to the limit
+  EXPECT_EQ(control.acceptedStepFactor(1.0, kSmallError), 2.0);
+  EXPECT_LT(control.rejectedStepFactor(50), 1.0);
+  EXPECT_EQ(control.acceptedStepFactor(0.5, kSmallError), 1.0);  // the retry, accepted
+  EXPECT_GT(control.acceptedStepFactor(0.5, kSmallError), 1.0);  // the next grows again
+}
+
+TEST(CushionStepControl, SafetyFactorComesFromTheOptions) {
+  const CushionParams p = test::snookerCushion();
+  ExactSolverOptions options = test::partsOptions();
+  options.step_safety = 0.5;
+  const StepControl control(p, test::spinningBall(p), options);
+  EXPECT_EQ(control.stepFactor(0.5), stepFactor(0.5, 0.5));
+  EXPECT_LT(control.stepFactor(0.5), stepFactor(0.5, 0.9));
 }
 
 TEST(CushionStepControl, NoCapsWithoutFrictionAndCapsWithIt) {
