@@ -123,6 +123,10 @@ constexpr double kMaxTolerance = 1e-6;
 // leaves the Dormand-Prince pair's stability region on the real axis, where the slip's direction
 // would oscillate instead of settling.
 constexpr double kMaxSlipDirectionTimeConstants = 5;
+// The largest step growth accepted: beyond it a step after a smooth stretch overshoots the next
+// feature of the solution by more than the step controller's smallest factor (1/3) can take back
+// in one retry.
+constexpr double kMaxStepGrowth = 5;
 // Logic guards, far above what the bounded equations need (an impact takes tens of steps and a few
 // contact changes).
 constexpr int kMaxSteps = 100000;
@@ -647,13 +651,18 @@ void validateExactSolverOptions(const ExactSolverOptions& options) {
     rejectValue("exact solver's smallest error share", options.min_error_share,
                 "it must lie in (0, 1]");
   }
-  if (!(options.step_safety > 0 && options.step_safety <= 1)) {
-    rejectValue("exact solver's step safety factor", options.step_safety, "it must lie in (0, 1]");
+  const ExactStepControl& control = options.step_control;
+  if (!(control.safety > 0 && control.safety <= 1)) {
+    rejectValue("exact solver's step safety factor", control.safety, "it must lie in (0, 1]");
   }
-  if (!(options.slip_direction_time_constants > 0 &&
-        options.slip_direction_time_constants <= kMaxSlipDirectionTimeConstants)) {
+  if (!(control.max_growth > 1 && control.max_growth <= kMaxStepGrowth)) {
+    rejectValue("exact solver's largest step growth", control.max_growth,
+                "it must lie in (1, " + valueText(kMaxStepGrowth) + "]");
+  }
+  if (!(control.slip_direction_time_constants > 0 &&
+        control.slip_direction_time_constants <= kMaxSlipDirectionTimeConstants)) {
     rejectValue("exact solver's step cap in slip direction time constants",
-                options.slip_direction_time_constants,
+                control.slip_direction_time_constants,
                 "it must lie in (0, " + valueText(kMaxSlipDirectionTimeConstants) + "]");
   }
   if (!(options.trace_spacing_Ns >= 0) || !std::isfinite(options.trace_spacing_Ns)) {

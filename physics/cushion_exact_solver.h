@@ -17,14 +17,35 @@ namespace baize::physics {
 // within this of the converged solution, in units of V0 (spins as R w).
 constexpr double kExactPromise = 1e-9;
 
+// The exact solver's step control (docs/cushion-solvers.md, "Error control and steps"). The
+// defaults keep kExactPromise at the default tolerance, where they sit on a flat optimum; the
+// default path's fallback, whose error is counted per step and whose promise is looser, takes its
+// own (tabulatedFallbackOptions).
+struct ExactStepControl {
+  // The next step is this safety factor times error^(-1/8) times the last, within [1/3,
+  // max_growth]. Accepted: (0, 1].
+  double safety = 0.9;
+  // The most a step may grow over the last. Accepted: (1, 5].
+  double max_growth = 3;
+  // A step (in tau) may span at most this many time constants of the fastest-settling slip
+  // direction. A small slip's direction settles where friction and the other forces balance at a
+  // rate that grows as 1 / (|u| + s0), and steps of more than about two of its time constants run
+  // toward the method's stability limit (about 6 on the real axis), where the embedded estimate
+  // missed steps' true errors by 10 to 100 times: a nose slip of 2 s0 with a large cloth slip left
+  // an impact 4.7e-9 V0 off, and grippy cushions (mu_s 0.35 to 0.425) missed 1e-9 V0 in 3 of 1000
+  // impacts. Of the caps tried (1.5 to 5), 2.75 was the one with no impact above kExactPromise on
+  // any set (docs/cushion-solvers.md, "Steps capped by a slip's turning"). Accepted: (0, 5].
+  double slip_direction_time_constants = 2.75;
+};
+
 struct ExactSolverOptions {
   // Error allowed, relative to the velocity scale |v| + R |w| (and the matching impulse and work
   // scales), per share of the impact's impulse (error per unit step; see min_error_share).
   // Accepted: [1e-14, 1e-6]. The default keeps output velocities within kExactPromise of the
   // converged solution: over the 12000 seeded impacts of `baize bench cushion --impacts 8000` (wide
-  // and rolling sets) the largest error is 2.3e-10 V0 on the paper's snooker cushion and 3.1e-10
+  // and rolling sets) the largest error is 1.9e-10 V0 on the paper's snooker cushion and 3.0e-10
   // V0 on the 9 ft pool table's (tests and the bench check it on smaller sets); over the 13,002
-  // impacts of 5000 random single shots (`baize bench cushion --from-shots 5000`) it is 2.6e-10 V0.
+  // impacts of 5000 random single shots (`baize bench cushion --from-shots 5000`) it is 2.5e-10 V0.
   double tolerance = 3e-11;
   // The smallest share of the impact's impulse scale (M times the velocity scale) a step's error
   // allowance is cut to: a step covering a share s of it may add s times the tolerance, but no
@@ -35,27 +56,16 @@ struct ExactSolverOptions {
   // 0.3 to 1 cost 3 to 10 % fewer evaluations but let rare impacts of the drawn rolling set exceed
   // it.
   double min_error_share = 0.2;
-  // The safety factor of the step-size rule: the next step is this times error^(-1/8) of the last
-  // (within the growth limits). Accepted: (0, 1]. 0.9 suits the default's error per unit step;
-  // the default path's fallback (tabulatedFallbackOptions) takes its own.
-  double step_safety = 0.9;
-  // A step (in tau) may span at most this many time constants of the fastest-settling slip
-  // direction. A small slip's direction settles where friction and the other forces balance at a
-  // rate that grows as 1 / (|u| + s0), and steps of more than about two of its time constants run
-  // toward the method's stability limit (about 6 on the real axis), where the embedded estimate
-  // missed steps' true errors by 10 to 100 times: a nose slip of 2 s0 with a large cloth slip left
-  // an impact 4.7e-9 V0 off, and grippy cushions (mu_s 0.35 to 0.425) missed 1e-9 V0 in 3 of 1000
-  // impacts. Of the caps tried (1.5 to 5), 2.75 was the one with no impact above kExactPromise on
-  // any set (docs/cushion-solvers.md, "Steps capped by a slip's turning"). Accepted: (0, 5].
-  double slip_direction_time_constants = 2.75;
+  // How the steps are sized; the default path's fallback takes its own (tabulatedFallbackOptions).
+  ExactStepControl step_control;
   // > 0: record result.trace with samples at least this dense in P (N s), plus every step and
   // event.
   double trace_spacing_Ns = 0;
 };
 
 // Throws std::invalid_argument naming the value unless the tolerance lies in [1e-14, 1e-6], the
-// smallest error share and the step safety in (0, 1], the slip direction's time constants in
-// (0, 5] and the trace spacing is finite and >= 0.
+// smallest error share and the step safety in (0, 1], the step growth in (1, 5], the slip
+// direction's time constants in (0, 5] and the trace spacing is finite and >= 0.
 void validateExactSolverOptions(const ExactSolverOptions& options);
 
 // Throws std::invalid_argument on invalid parameters, incoming state or options.

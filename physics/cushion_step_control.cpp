@@ -18,20 +18,13 @@ namespace baize::physics::cushion_exact {
 // more evaluations on the impacts of play (docs/cushion-solvers.md, "Steps capped at a slip's
 // turning scale").
 constexpr double kTurningScaleSteps = 1.0;
-// Step-size control of the embedded pair: bounds on the change per step (the safety factor is the
-// options', ExactSolverOptions::step_safety). Growth beyond 2 per step met the solution's sharper
-// stretches (a slip shrinking fast toward a turn) with steps whose errors read 10 to 1000 times
-// the allowance: at the default path's fallback (tabulatedFallbackOptions, its step control as
-// the exact solver's), a limit of 2 instead of 3 took the 2,209 impacts of play it solves (those
-// of the benches' first 3000 random single shots) from 244.1 to 239.2 rate evaluations each and
-// the 9-ball break's 5 from 241.8 to 232.6, with the same largest errors (against the exact
-// solver at 1e-14); at the exact solver's default, 430.5 and 430.4 on the same impacts of play.
+// Step-size control of the embedded pair: the smallest factor of a step over the last (the safety
+// factor and the largest growth are the options', ExactStepControl).
 constexpr double kStepMinFactor = 1.0 / 3;
-constexpr double kStepMaxFactor = 2.0;
 // After a contact changes its law (held, released, stuck, slipping again) the next step covers at
 // least this fraction of the first step's impulse: the step before was sized for the law that
 // ended, often cut short to land on the change (to 1e-9 of the impulse where an approaching slip
-// was landed on), and the controller grew it back threefold per step (kStepMaxFactor: 15 steps in
+// was landed on), and the controller grew it back threefold per step (the growth limit: 15 steps in
 // one stick-slip impact of play). The step's bounds and the error control then apply as to any
 // step. 1, 0.1 and 0.01 gave 381.0, 380.2 and 381.0 evaluations per impact of play (384.9
 // without), the largest error at most 3.3e-10 V0 at each.
@@ -72,12 +65,12 @@ double inverseEighthRoot(double x) {
   return y * (9 - x * (y4 * y4)) * kNewtonEighth;
 }
 
-double stepFactor(double error, double safety) {
-  if (error == 0) return kStepMaxFactor;
+double stepFactor(double error, const ExactStepControl& control) {
+  if (error == 0) return control.max_growth;
   if (!(error > 0)) return kStepMinFactor;  // NaN: that step failed; try a shorter one
   // The estimate is 8th order; most steps lie at the floor of the error share, where dividing by
   // the share leaves that order (above the floor it is one lower, which the safety factor covers).
-  return std::clamp(safety * inverseEighthRoot(error), kStepMinFactor, kStepMaxFactor);
+  return std::clamp(control.safety * inverseEighthRoot(error), kStepMinFactor, control.max_growth);
 }
 
 // The root in (0, limit] of the cubic through value g0 > 0 and slope d0 < 0 at 0 and value gp and
@@ -107,12 +100,12 @@ bool extrapolatedRoot(double gp, double dp, double g0, double d0, double H, doub
 
 StepControl::StepControl(const CushionParams& params, const BallVelocity& incoming,
                          const ExactSolverOptions& options)
-    : ImpactRates(params, incoming, options), step_safety_(options.step_safety) {
+    : ImpactRates(params, incoming, options), step_control_(options.step_control) {
   // See slipDirectionStep: the cloth's friction at its largest is mu_s (s + c mu_w). (A
   // frictionless contact never slips with friction: its bound is never read.)
   const std::array<double, 2> direction_rate = {
       3.5 * mu_[0] * inverse_mass_, 3.5 * (mu_[1] * (s_ + c_ * mu_[0])) * inverse_mass_};
-  const double time_constants = options.slip_direction_time_constants;
+  const double time_constants = step_control_.slip_direction_time_constants;
   for (int k = 0; k < 2; ++k) {
     // (A rate of a subnormal friction coefficient would overflow the quotient.)
     direction_time_scale_[k] =
@@ -145,7 +138,7 @@ double StepControl::turningScaleStep(const std::array<Eigen::Vector2d, 2>& u,
   return step;
 }
 
-// The longest step (tau) that spans ExactSolverOptions::slip_direction_time_constants of each
+// The longest step (tau) that spans ExactStepControl::slip_direction_time_constants of each
 // slipping contact's slip
 // direction's time constant; infinite when no contact slips with friction along its slip. Across
 // its direction a slip u moves under its own friction at up to 7/2 mu / M per unit P (the largest
@@ -229,16 +222,18 @@ double StepControl::cappedStep(const std::array<Eigen::Vector2d, 2>& u, const St
 // shrinking toward zero makes the right step shrink by a steady ratio) the next step follows it
 // too, instead of overshooting into a rejection every other step. The step after one accepted
 // at the second try does not grow (Hairer's rule): the stretch that was rejected lies just ahead,
-// and the retry's small error only says that the shortened step stopped short of it. (At the
-// default path's fallback tolerance, 226.8 instead of 230.0 evaluations per impact of play; the
-// 9-ball break's the same; at the exact solver's default 390.1 instead of 391.8.)
+// and the retry's small error only says that the shortened step stopped short of it. (Rate
+// evaluations per impact against the exact solver at 1e-14, with and without the rule: at the
+// default, 251.8 and 252.5 on the 7,755 impacts of the benches' first 3000 random single shots,
+// 428.2 and 430.5 on the 2,209 of them the default path's table leaves; at the default path's
+// fallback, 223.4 and 226.8 on those 2,209, the largest errors the same.)
 double StepControl::acceptedStepFactor(double h, double error) {
   double factor = stepFactor(error);
   if (previous_error_ > 0 && error > 0) {
     // (Two estimated roots: within 0.41 %, against the 10 % of the safety factor.)
     const double trend =
         (h / previous_step_) / inverseEighthRoot(previous_error_) * inverseEighthRoot(error);
-    factor = std::clamp(factor * trend, kStepMinFactor, kStepMaxFactor);
+    factor = std::clamp(factor * trend, kStepMinFactor, step_control_.max_growth);
   }
   if (after_rejection_) factor = std::min(factor, 1.0);
   after_rejection_ = false;

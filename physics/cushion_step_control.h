@@ -20,9 +20,9 @@ constexpr double kApproachLooseness = 0.25;
 
 // x^(-1/8) within 0.21 % (see the definition).
 double inverseEighthRoot(double x);
-// The factor by which to change the step after one with this error (scaled; <= 1 accepts), with
-// this safety factor.
-double stepFactor(double error, double safety);
+// The factor by which to change the step after one with this error (scaled; <= 1 accepts), under
+// this step control.
+double stepFactor(double error, const ExactStepControl& control);
 // The root in (0, limit] of the cubic through value g0 > 0 and slope d0 < 0 at 0 and value gp and
 // slope dp at -H < 0 (an event function extrapolated from the last step across the next): Newton
 // from the linear guess, kept where the cubic falls. Returns false when it finds none there.
@@ -49,8 +49,8 @@ class StepControl : public ImpactRates {
   // The factor of the retry after a rejected step with this error, which it records (the step
   // after the retry does not grow).
   double rejectedStepFactor(double error);
-  // The factor of a step after one with this error, with the options' safety factor.
-  double stepFactor(double error) const { return cushion_exact::stepFactor(error, step_safety_); }
+  // The factor of a step after one with this error, under the options' step control.
+  double stepFactor(double error) const { return cushion_exact::stepFactor(error, step_control_); }
 
  protected:
   // N s: the longest impulse the next step may cover after a release (infinite: no cap)
@@ -64,9 +64,9 @@ class StepControl : public ImpactRates {
   // steps since the last event or change that did not land (kMaxMissedLandings).
   double last_phase_value_ = 0, last_phase_slope_ = 0, last_step_ = 0;
   int missed_landings_ = 0;
-  const double step_safety_;      // ExactSolverOptions::step_safety
-  bool after_rejection_ = false;  // the last main-loop step was rejected
-  // ExactSolverOptions::slip_direction_time_constants over 7/2 mu / M per contact (N s per unit of
+  const ExactStepControl step_control_;  // ExactSolverOptions::step_control
+  bool after_rejection_ = false;         // the last main-loop step was rejected
+  // ExactStepControl::slip_direction_time_constants over 7/2 mu / M per contact (N s per unit of
   // slip: the impulse over which its own friction turns a slip of unit size by that many
   // radians); infinite where that rate is zero or too small for the quotient (slipDirectionStep).
   std::array<double, 2> direction_time_scale_{};

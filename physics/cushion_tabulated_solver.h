@@ -34,25 +34,25 @@ constexpr double kTabulatedFallbackTolerance = 1e-8;
 constexpr double kTabulatedFallbackErrorShare = 1;
 
 // The step control of those impacts: bolder than the exact solver's, whose constants keep its
-// tighter promise. With an error per step the best safety factor is lower (the steps' errors add
-// up, and a rejection costs a whole step), and the steps may span more of a slip direction's time
-// constants (the estimate's misses there, 10 to 100 times a step's allowance, stay far below this
-// path's promise). On the 2,209 impacts of the first 3000 shots: 236.4 rate evaluations per impact
-// with the exact solver's pair (0.9, 2.75 time constants), 226.8 with 0.9 and 4, 223.4 with these;
-// on the 9-ball break's 5, 232.8, 226.2 and 221.0; on the 21,877 of 30,000 shots, 240.2 and
-// 227.4 (the first and the last), the largest error 2.1e-7 V0 at each. A cap of 5 took 224.3
-// there but reached 6.5e-7 V0, where the estimate failed; a safety factor of 0.7, 229.6.
-constexpr double kTabulatedFallbackStepSafety = 0.8;
-constexpr double kTabulatedFallbackSlipDirectionTimeConstants = 4;
+// tighter promise. With an error per step the best safety factor is lower and the best growth
+// limit smaller (the steps' errors add up, and a rejection costs a whole step), and the steps may
+// span more of a slip direction's time constants (the estimate's misses there, 10 to 100 times a
+// step's allowance, stay far below this path's promise). Rate evaluations per impact with the
+// exact solver's control (0.9, 3, 2.75) and with this one, the largest errors the same (against
+// the exact solver at 1e-14): 239.7 and 223.4 on the 2,209 impacts the table leaves of the
+// benches' first 3000 random single shots, 241.8 and 221.0 on the 9-ball break's 5, 243.8 and
+// 227.4 on the 21,877 of 30,000 shots (2.1e-7 V0 at most). A growth limit of 3 instead of 2 took
+// 227.8, 225.4 and 231.3; a cap of 5 time constants took 224.3 on the 30,000 shots' impacts but
+// reached 6.5e-7 V0, where the estimate failed; a safety factor of 0.7, 229.6.
+constexpr ExactStepControl kTabulatedFallbackStepControl = {0.8, 2, 4};
 
 // The options of the exact solver behind the table: its defaults, at kTabulatedFallbackTolerance,
-// kTabulatedFallbackErrorShare and the step control above.
+// kTabulatedFallbackErrorShare and kTabulatedFallbackStepControl.
 inline ExactSolverOptions tabulatedFallbackOptions() {
   ExactSolverOptions options;
   options.tolerance = kTabulatedFallbackTolerance;
   options.min_error_share = kTabulatedFallbackErrorShare;
-  options.step_safety = kTabulatedFallbackStepSafety;
-  options.slip_direction_time_constants = kTabulatedFallbackSlipDirectionTimeConstants;
+  options.step_control = kTabulatedFallbackStepControl;
   return options;
 }
 

@@ -1204,31 +1204,27 @@ TEST(CushionExactSolver, RejectsOptionsOutsideTheirRanges) {
   expectRejected(withErrorShare(0.0), {"error share", "= 0", "(0, 1]"});
   expectRejected(withErrorShare(1.5), {"error share", "1.5", "(0, 1]"});
   expectRejected(withErrorShare(std::numeric_limits<double>::quiet_NaN()), {"error share", "nan"});
-  auto withSafety = [&](double safety) {
+  auto withStepControl = [&](ExactStepControl control) {
     return [=] {
       ExactSolverOptions options;
-      options.step_safety = safety;
+      options.step_control = control;
       solveCushionImpactExact(p, in, options);
     };
   };
-  expectRejected(withSafety(0.0), {"step safety", "= 0", "(0, 1]"});
-  expectRejected(withSafety(1.25), {"step safety", "1.25", "(0, 1]"});
-  expectRejected(withSafety(std::numeric_limits<double>::quiet_NaN()), {"step safety", "nan"});
-  auto withDirectionCap = [&](double time_constants) {
-    return [=] {
-      ExactSolverOptions options;
-      options.slip_direction_time_constants = time_constants;
-      solveCushionImpactExact(p, in, options);
-    };
-  };
-  expectRejected(withDirectionCap(0.0), {"time constants", "= 0", "(0, 5]"});
-  expectRejected(withDirectionCap(6.5), {"time constants", "6.5", "(0, 5]"});
-  expectRejected(withDirectionCap(std::numeric_limits<double>::infinity()),
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  expectRejected(withStepControl({0.0, 3, 2.75}), {"step safety", "= 0", "(0, 1]"});
+  expectRejected(withStepControl({1.25, 3, 2.75}), {"step safety", "1.25", "(0, 1]"});
+  expectRejected(withStepControl({kNaN, 3, 2.75}), {"step safety", "nan"});
+  expectRejected(withStepControl({0.9, 1, 2.75}), {"step growth", "= 1", "(1, 5]"});
+  expectRejected(withStepControl({0.9, 7.5, 2.75}), {"step growth", "7.5", "(1, 5]"});
+  expectRejected(withStepControl({0.9, kNaN, 2.75}), {"step growth", "nan"});
+  expectRejected(withStepControl({0.9, 3, 0.0}), {"time constants", "= 0", "(0, 5]"});
+  expectRejected(withStepControl({0.9, 3, 6.5}), {"time constants", "6.5", "(0, 5]"});
+  expectRejected(withStepControl({0.9, 3, std::numeric_limits<double>::infinity()}),
                  {"time constants", "inf"});
   // The bounds themselves are accepted.
   ExactSolverOptions bounds;
-  bounds.step_safety = 1;
-  bounds.slip_direction_time_constants = 5;
+  bounds.step_control = {1, 5, 5};
   EXPECT_LT(solveCushionImpactExact(p, in, bounds).after.v.y(), 0);  // a rebound
   // The solver validates its inputs (the validation itself is tested with the model).
   CushionParams bad = p;

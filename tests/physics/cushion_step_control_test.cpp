@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/cushion_tabulated_solver.h"
 #include "tests/physics/cushion_exact_parts_support.h"
 
 namespace baize::physics {
@@ -31,13 +32,14 @@ TEST(CushionStepControl, InverseEighthRootIsWithinItsPromise) {
 }
 
 TEST(CushionStepControl, StepFactorIsBoundedAndShrinksWithTheError) {
-  for (const double safety : {0.9, 0.8}) {
-    EXPECT_EQ(stepFactor(0, safety), 2.0);  // no error: the largest growth
-    EXPECT_EQ(stepFactor(std::numeric_limits<double>::quiet_NaN(), safety), 1.0 / 3);
-    EXPECT_EQ(stepFactor(1e30, safety), 1.0 / 3);
-    EXPECT_NEAR(stepFactor(1, safety), safety, safety * kEighthRootRelative);  // the safety
-    EXPECT_NEAR(stepFactor(256, safety), safety / 2, safety / 2 * kEighthRootRelative);
-    EXPECT_EQ(stepFactor(1e-30, safety), 2.0);
+  for (const ExactStepControl control : {ExactStepControl{}, kTabulatedFallbackStepControl}) {
+    const double safety = control.safety, growth = control.max_growth;
+    EXPECT_EQ(stepFactor(0, control), growth);  // no error: the largest growth
+    EXPECT_EQ(stepFactor(std::numeric_limits<double>::quiet_NaN(), control), 1.0 / 3);
+    EXPECT_EQ(stepFactor(1e30, control), 1.0 / 3);
+    EXPECT_NEAR(stepFactor(1, control), safety, safety * kEighthRootRelative);  // the safety
+    EXPECT_NEAR(stepFactor(256, control), safety / 2, safety / 2 * kEighthRootRelative);
+    EXPECT_EQ(stepFactor(1e-30, control), growth);
   }
 }
 
@@ -69,19 +71,21 @@ TEST(CushionStepControl, StepAfterARetryDoesNotGrow) {
   const CushionParams p = test::snookerCushion();
   StepControl control(p, test::spinningBall(p), test::partsOptions());
   constexpr double kSmallError = 1e-6;  // alone, grows the step to the limit
-  EXPECT_EQ(control.acceptedStepFactor(1.0, kSmallError), 2.0);
+  EXPECT_EQ(control.acceptedStepFactor(1.0, kSmallError),
+            test::partsOptions().step_control.max_growth);
   EXPECT_LT(control.rejectedStepFactor(50), 1.0);
   EXPECT_EQ(control.acceptedStepFactor(0.5, kSmallError), 1.0);  // the retry, accepted
   EXPECT_GT(control.acceptedStepFactor(0.5, kSmallError), 1.0);  // the next grows again
 }
 
-TEST(CushionStepControl, SafetyFactorComesFromTheOptions) {
+TEST(CushionStepControl, StepControlComesFromTheOptions) {
   const CushionParams p = test::snookerCushion();
   ExactSolverOptions options = test::partsOptions();
-  options.step_safety = 0.5;
+  options.step_control = {0.5, 1.5, 2};
   const StepControl control(p, test::spinningBall(p), options);
-  EXPECT_EQ(control.stepFactor(0.5), stepFactor(0.5, 0.5));
-  EXPECT_LT(control.stepFactor(0.5), stepFactor(0.5, 0.9));
+  EXPECT_EQ(control.stepFactor(0.5), stepFactor(0.5, options.step_control));
+  EXPECT_LT(control.stepFactor(0.5), stepFactor(0.5, ExactStepControl{}));
+  EXPECT_EQ(control.stepFactor(0), 1.5);
 }
 
 TEST(CushionStepControl, NoCapsWithoutFrictionAndCapsWithIt) {

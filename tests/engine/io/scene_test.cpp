@@ -30,7 +30,7 @@ constexpr double kOverlapTolerance_m = 1e-9;
 // See NineBallBreakIsPinnedBitForBit. Changes only when the arithmetic changes on purpose (last:
 // the exact cushion solver's step control and cone-event location, and bolder step control for
 // the default path's fallback; the break moved by under 1.3e-6 s and 1.4e-7 m).
-constexpr std::uint64_t kPinnedNineBallBreakHash = 6069794241883032577ULL;
+constexpr std::uint64_t kPinnedNineBallBreakHash = 15976486600879214169ULL;
 
 std::string sceneError(const nlohmann::json& document) {
   try {
