@@ -32,34 +32,51 @@ constexpr double kEventRoundingUlps = 16;
 // contact changes).
 constexpr int kMaxEventIterations = 60;
 // A cone event's slope along the state's interpolant across the step that crossed it, by a
-// central difference over this share of the step either side (the interpolant is a cubic: its
-// truncation error is nil, its rounding about 1e-10 of the slope).
+// central difference over this share of the step either side: its truncation error is of the
+// order of the share squared, its rounding about 1e-10 of the slope.
 constexpr double kInterpolantSlopeShare = 1e-6;
 
-// Where along the step from z (rate k1) to full (of length h) a cone event crossed it: the root of
-// its margin along the cubic Hermite interpolant of the state (regula falsi on the interpolant,
-// margin evaluations only), as a share of the step, with the margin's slope there per unit tau.
-struct InterpolatedCrossing {
-  double share = 0, slope = 0;
-};
-template <typename Margin>
-InterpolatedCrossing interpolatedCrossing(const State& z, const State& k1, const Step& full,
-                                          double h, double g_start, double g_end,
-                                          const Margin& margin) {
-  const dop853::DenseOutput<State> dense{z, k1, full.z, full.rate_at_end, h};
-  dop853::IllinoisBracket bracket{0, g_start, 1, g_end};
-  double share = bracket.trial();
-  for (int it = 0; it < kMaxEventIterations && bracket.hi - bracket.lo > dop853::kDenseBracketShare;
-       ++it) {
-    share = bracket.trial();
-    const double g = margin(dense.at(share));
-    if (g == 0) break;
-    bracket.narrow(share, g);
+// A cone event's trials (see locate): the first where its margin crosses zero along the cubic
+// Hermite interpolant of the state over the step that crossed it (regula falsi on the
+// interpolant, margin evaluations only), the second Newton's with the interpolant's slope there,
+// the next the secant through the last two accurate trials. A trial outside the bracket is
+// replaced by the bracket's own (in locate).
+class ConeTrials {
+ public:
+  template <typename Margin>
+  double first(const State& z, const State& k1, const Step& full, double h, double g_start,
+               double g_end, const Margin& margin) {
+    const dop853::DenseOutput<State> dense{z, k1, full.z, full.rate_at_end, h};
+    dop853::IllinoisBracket bracket{0, g_start, 1, g_end};
+    double share = bracket.trial();
+    for (int it = 0;
+         it < kMaxEventIterations && bracket.hi - bracket.lo > dop853::kDenseBracketShare; ++it) {
+      share = bracket.trial();
+      const double g = margin(dense.at(share));
+      if (g == 0) break;
+      bracket.narrow(share, g);
+    }
+    const double ahead = margin(dense.at(share + kInterpolantSlopeShare));
+    const double behind = margin(dense.at(share - kInterpolantSlopeShare));
+    interpolant_slope_ = (ahead - behind) / (2 * kInterpolantSlopeShare * h);
+    return share * h;
   }
-  const double ahead = margin(dense.at(share + kInterpolantSlopeShare));
-  const double behind = margin(dense.at(share - kInterpolantSlopeShare));
-  return {share, (ahead - behind) / (2 * kInterpolantSlopeShare * h)};
-}
+  // The trial after an accurate one of this length, where the margin is g (-1: none).
+  double next(double tried, double g) {
+    double trial = -1;
+    if (last_ >= 0 && g != last_g_)
+      trial = tried - g * (tried - last_) / (g - last_g_);
+    else if (interpolant_slope_ < 0)
+      trial = tried - g / interpolant_slope_;
+    last_ = tried;
+    last_g_ = g;
+    return trial;
+  }
+
+ private:
+  double interpolant_slope_ = 0;   // per unit tau; 0: none
+  double last_ = -1, last_g_ = 0;  // the last accurate trial's length and margin (-1: none)
+};
 
 double EventLocation::eventValue(const Event& event, const State& z) const {
   if (event.phase_end) return compressing_ ? normalVelocity(z) : z[kWork] - work_target_;
@@ -91,8 +108,8 @@ double EventLocation::eventTolerance(const Event& event) const {
 
 // Finds the step length in [0, h] that lands on an event the full step crossed: Newton on the
 // length where the event has a slope (each trial a full Runge-Kutta step, whose end rate gives
-// the next slope), Illinois regula falsi otherwise. Returns false, with *length set to a shorter
-// step to take instead, when a trial breaks the error tolerance.
+// the next slope), ConeTrials for a cone event, Illinois regula falsi otherwise. Returns false,
+// with *length set to a shorter step to take instead, when a trial breaks the error tolerance.
 bool EventLocation::locate(const Event& event, const State& z, const State& k1, double h,
                            const Step& full, double* length, Step* landed) {
   const double tolerance_g = eventTolerance(event);
@@ -118,16 +135,11 @@ bool EventLocation::locate(const Event& event, const State& z, const State& k1, 
   if (event.phase_end && g_hi < 0)
     trial = h * dop853::hermiteRoot(g_lo, slope_lo * h, g_hi, slope_hi * h);
   // A cone event's margin has no slope from the rates and is far from linear in the step (regula
-  // falsi from the step's ends took seven trials on the 9-ball break's stick): its first trial is
-  // its root along the state's interpolant, the second Newton's with the interpolant's slope, and
-  // the next the secant through the last two accurate trials.
-  const bool cone = event.cone();
-  double interpolant_slope = 0, last_trial = -1, last_g = 0;
-  if (cone && g_hi < 0) {
-    const InterpolatedCrossing crossing = interpolatedCrossing(
-        z, k1, full, h, g_lo, g_hi, [&](const State& y) { return eventValue(event, y); });
-    trial = crossing.share * h;
-    interpolant_slope = crossing.slope;
+  // falsi from the step's ends took seven trials on the 9-ball break's stick): ConeTrials.
+  ConeTrials cone_trials;
+  if (event.cone() && g_hi < 0) {
+    trial = cone_trials.first(z, k1, full, h, g_lo, g_hi,
+                              [&](const State& y) { return eventValue(event, y); });
   }
   int side = 0;
   for (int it = 0; it < kMaxEventIterations; ++it) {
@@ -180,14 +192,9 @@ bool EventLocation::locate(const Event& event, const State& z, const State& k1, 
     if (hi - lo <= kEventBracketUlps * kEpsilon * h) break;
     // (After an inaccurate trial its slope is no guide: the trial, now the bracket's end, makes
     // the next one regula falsi.)
-    if (accurate && cone) {
-      const double tried = trial;
-      trial = last_trial >= 0 && g != last_g ? tried - g * (tried - last_trial) / (g - last_g)
-                                             : newton(tried, g, interpolant_slope);
-      last_trial = tried;
-      last_g = g;
-    } else if (accurate) {
-      trial = newton(trial, g, eventSlope(event, attempt.rate_at_end));
+    if (accurate) {
+      trial = event.cone() ? cone_trials.next(trial, g)
+                           : newton(trial, g, eventSlope(event, attempt.rate_at_end));
     }
   }
   // (A landing beyond the bracket is none: a trial that broke the tolerance past the event

@@ -12,8 +12,8 @@ namespace baize::physics::cushion_exact {
 // 30 times below the step's true error. Such steps made the largest errors of the bench's impacts
 // on the pool cushion (at tolerance 3e-11: 9.0e-10 V0, 5.4e-10 with a bound of 1) and, with a bound
 // of 1, of the impacts of play (1.1e-9 V0 over the 16,180 of `baize bench cushion --from-shots
-// 5000`, a slip growing from 4.1e-4 to 7.7e-4 V in one step; 5.9e-10 with 0.7, for 1 % more
-// evaluations there and 0.3 to 0.6 % on the bench's).
+// 5000` as the shots were then, a slip growing from 4.1e-4 to 7.7e-4 V in one step; 5.9e-10 with
+// 0.7, for 1 % more evaluations there and 0.3 to 0.6 % on the bench's).
 constexpr double kSmallSlipGrowthPerStep = 0.7;
 
 // dz/dtau.

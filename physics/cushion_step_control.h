@@ -46,8 +46,8 @@ class StepControl : public ImpactRates {
   // The factor of the step after an accepted step of length h (tau) and this error, which it
   // records for the next (predictive control).
   double acceptedStepFactor(double h, double error);
-  // The factor of the retry after a rejected step with this error, which it records (the step
-  // after the retry does not grow).
+  // The factor of the retry after a main-loop step rejected with this error, which it records
+  // (the step after the next accepted one does not grow).
   double rejectedStepFactor(double error);
   // The factor of a step after one with this error, under the options' step control.
   double stepFactor(double error) const { return cushion_exact::stepFactor(error, step_control_); }
@@ -65,7 +65,8 @@ class StepControl : public ImpactRates {
   double last_phase_value_ = 0, last_phase_slope_ = 0, last_step_ = 0;
   int missed_landings_ = 0;
   const ExactStepControl step_control_;  // ExactSolverOptions::step_control
-  bool after_rejection_ = false;         // the last main-loop step was rejected
+  // A main-loop step was rejected since the last one accepted (acceptedStepFactor).
+  bool after_rejection_ = false;
   // ExactStepControl::slip_direction_time_constants over 7/2 mu / M per contact (N s per unit of
   // slip: the impulse over which its own friction turns a slip of unit size by that many
   // radians); infinite where that rate is zero or too small for the quotient (slipDirectionStep).

@@ -19,8 +19,9 @@ class TabulatedCushionModel final : public ExactCushionModel {
 };
 
 // The registration: the keys of "exact"; tolerance is the exact solver's, for the impacts the
-// table does not answer (default physics::kTabulatedFallbackTolerance; the error share is always
-// physics::kTabulatedFallbackErrorShare).
+// table does not answer (default physics::kTabulatedFallbackTolerance; the error share and the
+// step control are always physics::kTabulatedFallbackErrorShare and
+// physics::kTabulatedFallbackStepControl).
 ModelEntry<CushionContactModel> tabulatedCushionModel();
 
 }  // namespace baize::engine

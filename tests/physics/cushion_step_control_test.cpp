@@ -115,6 +115,12 @@ TEST(CushionStepControl, NoCapsWithoutFrictionAndCapsWithIt) {
   const double smallest = std::min(u[0].norm() / change[0].norm(), u[1].norm() / change[1].norm());
   EXPECT_NEAR(turning, smallest, 1e-12 * smallest);
   EXPECT_GT(k1[kP], 0);
+  // The cap on a slip's turning spans the options' number of its time constants.
+  ExactSolverOptions bolder = test::partsOptions();
+  bolder.step_control.slip_direction_time_constants = 4;
+  const StepControl bold(p, ball, bolder);
+  EXPECT_NEAR(bold.slipDirectionStep(u) / direction,
+              4 / test::partsOptions().step_control.slip_direction_time_constants, 1e-12);
 }
 
 }  // namespace

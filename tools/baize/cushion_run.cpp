@@ -58,7 +58,8 @@ physics::CushionImpactResult solveCushionShot(const physics::CushionParams& para
     options.record_trace = record_trace;
     return physics::solveCushionImpactPaper(params, incoming, options);
   }
-  // The table's fallback keeps its own options (error share) at whatever tolerance is asked for.
+  // The table's fallback keeps its own options (error share, step control) at whatever tolerance
+  // is asked for.
   physics::ExactSolverOptions options = setting.kind == SolverKind::Tabulated
                                             ? physics::tabulatedFallbackOptions()
                                             : physics::ExactSolverOptions{};

@@ -40,7 +40,8 @@ TEST(CushionTabulatedModel, SolvesWhatItsTableLeavesAtItsOwnToleranceUnlessGiven
             physics::ExactSolverOptions{}.tolerance);
   EXPECT_EQ(cushionModel({{"tolerance", 1e-12}})->parametersJson()["tolerance"], 1e-12);
   // A sliding ball (no table answer) gets the exact solver's answer with the table's fallback
-  // options (its tolerance and its error share, which the exact model's default does not share),
+  // options (its tolerance, and its error share and step control, which the exact model's default
+  // does not share),
   // and so lies within the path's promise of the exact model's answer at the same tolerance.
   SimulationParams tabulated = poolSimulationParams(), exact = poolSimulationParams();
   exact.cushion =
@@ -58,7 +59,8 @@ TEST(CushionTabulatedModel, SolvesWhatItsTableLeavesAtItsOwnToleranceUnlessGiven
   EXPECT_EQ(a.w, b.w);
   const physics::BallVelocity c = exact.cushion->resolve(exact, sliding);
   EXPECT_NE(a.v, c.v)
-      << "the error share makes no difference here: the test cannot tell them apart";
+      << "the error share and step control make no difference here: the test cannot tell them "
+         "apart";
   EXPECT_LE(difference(a, c, tabulated.ball.radius_m), physics::kTabulatedPathPromise * speed);
 }
 
