@@ -47,15 +47,8 @@ class ConeTrials {
   double first(const State& z, const State& k1, const Step& full, double h, double g_start,
                double g_end, const Margin& margin) {
     const dop853::DenseOutput<State> dense{z, k1, full.z, full.rate_at_end, h};
-    dop853::IllinoisBracket bracket{0, g_start, 1, g_end};
-    double share = bracket.trial();
-    for (int it = 0;
-         it < kMaxEventIterations && bracket.hi - bracket.lo > dop853::kDenseBracketShare; ++it) {
-      share = bracket.trial();
-      const double g = margin(dense.at(share));
-      if (g == 0) break;
-      bracket.narrow(share, g);
-    }
+    // (To the bracket's width: the trials that follow polish it.)
+    const double share = dop853::denseRoot(dense, g_start, g_end, margin, 0.0, kMaxEventIterations);
     const double ahead = margin(dense.at(share + kInterpolantSlopeShare));
     const double behind = margin(dense.at(share - kInterpolantSlopeShare));
     interpolant_slope_ = (ahead - behind) / (2 * kInterpolantSlopeShare * h);

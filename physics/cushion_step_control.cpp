@@ -139,8 +139,8 @@ double StepControl::turningScaleStep(const std::array<Eigen::Vector2d, 2>& u,
 }
 
 // The longest step (tau) that spans ExactStepControl::slip_direction_time_constants of each
-// slipping contact's slip
-// direction's time constant; infinite when no contact slips with friction along its slip. Across
+// slipping contact's slip direction's time constant; infinite when no contact slips with friction
+// along its slip. Across
 // its direction a slip u moves under its own friction at up to 7/2 mu / M per unit P (the largest
 // entry of the contacts' inverse effective mass, times M), which turns it at that over |u|;
 // dP/dtau = sigma turns the |u| of its own factor into |u| + s0 (a receding slip has none: its
@@ -224,11 +224,11 @@ double StepControl::cappedStep(const std::array<Eigen::Vector2d, 2>& u, const St
 // after a rejection does not grow (Hairer's rule): the stretch that was rejected lies just ahead,
 // and the retry's small error only says that the shortened step stopped short of it. (Only the
 // main loop's rejections count, not event location's trial steps; an event landed on between the
-// rejection and the next accepted step does not clear it.) (Rate
-// evaluations per impact against the exact solver at 1e-14, with and without the rule: at the
+// rejection and the next accepted step does not clear it.) Rate evaluations per impact against
+// the exact solver at 1e-14, with and without the rule: at the
 // default, 251.8 and 252.5 on the 7,755 impacts of the benches' first 3000 random single shots,
 // 428.2 and 430.5 on the 2,209 of them the default path's table leaves; at the default path's
-// fallback, 223.4 and 226.8 on those 2,209, the largest errors the same.)
+// fallback, 223.4 and 226.8 on those 2,209, the largest errors the same.
 double StepControl::acceptedStepFactor(double h, double error) {
   double factor = stepFactor(error);
   if (previous_error_ > 0 && error > 0) {

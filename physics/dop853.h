@@ -225,9 +225,27 @@ struct IllinoisBracket {
   }
 };
 
-// locateEvent's search on the dense output stops once its bracket is this share of the step: a few
-// rounding units of the share, far below the interpolant's own error.
+// The search on the dense output (denseRoot) stops once its bracket is this share of the step: a
+// few rounding units of the share, far below the interpolant's own error.
 constexpr double kDenseBracketShare = 1e-15;
+
+// Where along a step an event function (positive at its start, g_start, and at most zero at its
+// end, g_end) reaches |event| <= tolerance on the step's dense output, as a share of the step:
+// Illinois regula falsi on the interpolant, no rate evaluations; after max_iterations, or once the
+// bracket is kDenseBracketShare wide, its last trial.
+template <typename Vector, typename Event>
+double denseRoot(const DenseOutput<Vector>& dense, double g_start, double g_end, const Event& event,
+                 double tolerance, int max_iterations) {
+  IllinoisBracket share{0, g_start, 1, g_end};
+  double guess = 1;
+  for (int it = 0; it < max_iterations && share.hi - share.lo > kDenseBracketShare; ++it) {
+    guess = share.trial();
+    const double g = event(dense.at(guess));
+    if (std::abs(g) <= tolerance) break;
+    share.narrow(guess, g);
+  }
+  return guess;
+}
 
 // Where along a step from z (rate k1) of length h, whose end event(end) <= tolerance crossed it,
 // the event function (positive before the event) reaches |event| <= tolerance: a first guess from
@@ -241,14 +259,7 @@ double locateEvent(const Vector& z, const Vector& k1, double h, const Stages<Vec
                    Vector* at) {
   const DenseOutput<Vector> dense{z, k1, full.end, full.rate_at_end, h};
   const double g_start = event(z), g_end = event(full.end);
-  IllinoisBracket share{0, g_start, 1, g_end};
-  double guess = 1;
-  for (int it = 0; it < max_iterations && share.hi - share.lo > kDenseBracketShare; ++it) {
-    guess = share.trial();
-    const double g = event(dense.at(guess));
-    if (std::abs(g) <= tolerance) break;
-    share.narrow(guess, g);
-  }
+  const double guess = denseRoot(dense, g_start, g_end, event, tolerance, max_iterations);
   IllinoisBracket length{0, g_start, h, g_end};
   *at = full.end;
   double trial = guess * h;
